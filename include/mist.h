@@ -1,0 +1,695 @@
+/* mist.h - phase functions and fog models for renderers.          v0.1.0
+ *
+ * Header-only C99 (also C++ and CUDA).  No dependencies beyond <math.h>.
+ *
+ * USAGE
+ *   #include "mist.h"
+ *
+ *   double p  = mist_hg_eval(0.8, cos_theta);        // density per steradian
+ *   double u  = mist_draine_sample(0.5, 250.0, xi);  // exact inverse CDF: cos theta
+ *   float  pf = mist_cs_evalf(0.7f, cos_theta);      // float: same names + 'f'
+ *
+ *   // Scatter a propagation direction wi (the frame is built for you):
+ *   double pdf;
+ *   mist_vec3 wo = mist_hg_sample_dir(0.8, wi, xi1, xi2, &pdf);
+ *
+ *   // The Jendersie-d'Eon fog phase function: HG and Draine mixed.
+ *   mist_fog fog = mist_fog_make(g_hg, g_d, alpha, w_d);
+ *   double pf2 = mist_fog_eval(fog, u);
+ *   double u2  = mist_fog_sample(fog, xi);           // one xi: lobe, then lobe's u
+ *
+ * CONVENTIONS
+ *   u = cos(theta), theta the angle between the incident and the scattered
+ *   PROPAGATION directions: g > 0 scatters forward.  Every *_eval returns the
+ *   density per steradian; it integrates to 1 over the sphere.  Every sampler
+ *   is exact, so the pdf of a sample is the evaluated density (pbrt / Cycles
+ *   convention): *_sample_dir reports it.
+ *
+ *   Every scalar sampler *_sample(..., xi) except the fog mixture is the
+ *   inverse of the CDF  P(cos <= u) = xi,  monotone in xi, so stratified and
+ *   low-discrepancy sequences keep their structure.
+ *
+ *   Double is the plain name, float carries an 'f' suffix (as in libm).  The
+ *   float functions compute in float; both come from ONE definition of each
+ *   formula (the header includes itself once per type, see MIST__TEMPLATE).
+ *
+ * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
+ *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
+ *          |g| = 1 is the Dirac limit: samplers return u = g exactly (the
+ *          direction +-wi), eval returns 0 for u != g and +INFINITY at u = g,
+ *          and the direction samplers report pdf = +INFINITY.  Treat it as a
+ *          specular event.  For |g| < 1 every result is finite.
+ *   alpha  in [0, +inf].  alpha < 0 and NaN are taken as 0; alpha = +inf is
+ *          the exact limit (density proportional to HG * u^2).
+ *   u      in [-1, 1].  Values outside are clamped (a dot product of unit
+ *          vectors may exceed 1 by an ulp); NaN gives density 0.
+ *   xi     in [0, 1].  Values outside are clamped; NaN is taken as 0.
+ *          xi = 1 is accepted (returns the upper end, u = 1 for |g| < 1).
+ *   wi     any non-zero finite vector; it is normalised.  A zero, NaN or
+ *          infinite vector is taken as (0, 0, 1).
+ *   w_d    (fog mix weight) in [0, 1]; clamped, NaN taken as 0.
+ *
+ * CONFIGURATION (define before including)
+ *   MIST_FUNC     qualifiers of every function (default: static inline, plus
+ *                 __host__ __device__ under nvcc, so kernels can call them).
+ *   MIST_NO_FLOAT leave out the float ('f') functions.
+ *   MIST_NO_DOUBLE leave out the double functions.
+ *
+ * REFERENCES (section by section below)
+ *   [JD23] J. Jendersie, E. d'Eon, "An Approximate Mie Scattering Function for
+ *          Fog and Cloud Rendering", SIGGRAPH 2023 Talks, and its supplemental
+ *          (../shared/references/jendersie-deon-2023-approximate-mie-
+ *          supplemental.txt).
+ *   [HG41] L. Henyey, J. Greenstein, ApJ 93 (1941).
+ *   [CS92] W. Cornette, J. Shanks, Applied Optics 31 (1992).
+ *   [D03]  B. Draine, ApJ 598 (2003).
+ *   [DHB17] T. Duff et al., "Building an Orthonormal Basis, Revisited",
+ *          JCGT 6(1), 2017.
+ *
+ * LICENSE: MIT (see end of file).
+ */
+#ifndef MIST__TEMPLATE
+
+#ifndef MIST_H
+#define MIST_H
+
+#define MIST_VERSION_MAJOR 0
+#define MIST_VERSION_MINOR 1
+#define MIST_VERSION_PATCH 0
+#define MIST_VERSION_STRING "0.1.0"
+
+#include <math.h>
+#include <float.h>
+#include <stddef.h>
+
+#ifndef MIST_FUNC
+#  if defined(__CUDACC__)
+#    define MIST_FUNC static inline __host__ __device__
+#  else
+#    define MIST_FUNC static inline
+#  endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* Types                                                                    */
+/* ------------------------------------------------------------------------ */
+
+typedef struct mist_vec3  { double x, y, z; } mist_vec3;
+typedef struct mist_vec3f { float  x, y, z; } mist_vec3f;
+
+/* The Jendersie-d'Eon fog phase function [JD23, eq. 1]:
+ *   p(u) = (1 - w_d) HG(g_hg; u) + w_d Draine(g_d, alpha; u).
+ * Build it with mist_fog_make (which sanitises the four parameters). */
+typedef struct mist_fog  { double g_hg, g_d, alpha, w_d; } mist_fog;
+typedef struct mist_fogf { float  g_hg, g_d, alpha, w_d; } mist_fogf;
+
+/* 1/(4 pi), 3/(16 pi), 2 pi */
+#define MIST__INV4PI  0.0795774715459476678844418816862571810
+#define MIST__3_16PI  0.0596831036594607509133314112646928858
+#define MIST__2PI     6.28318530717958647692528676655900577
+
+/* ------------------------------------------------------------------------ */
+/* The passes: the body below is compiled once per type.                    */
+/*  - long double, internal formulas only: the wide type of the double       */
+/*    samplers' final Newton step, where long double is wider than double   */
+/*    (x86: 64-bit significand).  Elsewhere (MSVC, Apple, CUDA device code)  */
+/*    that step is skipped: see "Draine and Cornette-Shanks: exact sampling".*/
+/*  - double (plain names), wide type long double;                           */
+/*  - float ('f' suffix), wide type double.                                  */
+/* ------------------------------------------------------------------------ */
+#define MIST__TEMPLATE 1
+
+#if LDBL_MANT_DIG > DBL_MANT_DIG
+#  define MIST__HAVE_LD 1
+#  define MIST__INTERNAL_ONLY 1
+#  define MIST__F     static inline           /* host only: never on a GPU */
+#  define MIST__T     long double
+#  define MIST__FN(n) n##l
+#  define MIST__M(fn) fn##l
+#  include "mist.h"
+#  undef MIST__INTERNAL_ONLY
+#  undef MIST__F
+#  undef MIST__T
+#  undef MIST__FN
+#  undef MIST__M
+#endif
+
+#define MIST__F     MIST_FUNC
+#define MIST__T     double
+#define MIST__FN(n) n
+#define MIST__M(fn) fn
+#define MIST__EPS   (DBL_EPSILON * 0.5)       /* unit roundoff 2^-53 */
+#define MIST__MAXIT 64                        /* bisection worst case: 2^-60 */
+#define MIST__V3    mist_vec3
+#define MIST__FOG   mist_fog
+#if defined(FP_FAST_FMA)
+#  define MIST__FAST_FMA 1
+#endif
+#if defined(MIST__HAVE_LD) && !defined(__CUDA_ARCH__)
+#  define MIST__W      long double
+#  define MIST__WFN(n) n##l
+#endif
+#include "mist.h"
+#undef MIST__T
+#undef MIST__FN
+#undef MIST__M
+#undef MIST__EPS
+#undef MIST__MAXIT
+#undef MIST__V3
+#undef MIST__FOG
+#undef MIST__FAST_FMA
+#undef MIST__W
+#undef MIST__WFN
+
+#define MIST__T     float
+#define MIST__FN(n) n##f
+#define MIST__M(fn) fn##f
+#define MIST__EPS   (FLT_EPSILON * 0.5f)      /* unit roundoff 2^-24 */
+#define MIST__MAXIT 32
+#define MIST__V3    mist_vec3f
+#define MIST__FOG   mist_fogf
+#if defined(FP_FAST_FMAF)
+#  define MIST__FAST_FMA 1
+#endif
+#define MIST__W      double
+#define MIST__WFN(n) n
+#include "mist.h"
+#undef MIST__T
+#undef MIST__FN
+#undef MIST__M
+#undef MIST__EPS
+#undef MIST__MAXIT
+#undef MIST__V3
+#undef MIST__FOG
+#undef MIST__FAST_FMA
+#undef MIST__W
+#undef MIST__WFN
+#undef MIST__F
+
+#undef MIST__TEMPLATE
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MIST_H */
+
+#else /* MIST__TEMPLATE: the body, compiled once per type ----------------- */
+
+/* In this body: MIST__T is the type, MIST__FN(name) its public name,
+ * MIST__M(f) the libm function for it (sqrt / sqrtf), MIST__C(x) a constant
+ * of that type. */
+#define MIST__C(x) ((MIST__T)(x))
+
+/* ======================================================================== */
+/* Input sanitising (the documented domain, see the top of the file)        */
+/* ======================================================================== */
+
+/* g: NaN -> 0, clamped to [-1, 1]. */
+MIST__F MIST__T MIST__FN(mist__g)(MIST__T g)
+{
+    if (!(g == g)) return MIST__C(0);
+    return g < MIST__C(-1) ? MIST__C(-1) : (g > MIST__C(1) ? MIST__C(1) : g);
+}
+
+/* xi and u: NaN -> 0 resp. caller-handled; clamped to [lo, hi]. */
+MIST__F MIST__T MIST__FN(mist__clamp)(MIST__T x, MIST__T lo, MIST__T hi)
+{
+    if (!(x == x)) return lo < MIST__C(0) ? MIST__C(0) : lo;
+    return x < lo ? lo : (x > hi ? hi : x);
+}
+
+/* a * b + c, fused where the hardware fuses it (one rounding), else plain:
+ * never a slow software fma. */
+MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
+{
+#if defined(MIST__FAST_FMA)
+    return MIST__M(fma)(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+
+/* ======================================================================== */
+/* Henyey-Greenstein and Draine: evaluation                                 */
+/* [HG41], [JD23 eq. 2, 5], [D03]                                           */
+/*                                                                          */
+/*   p(u) = 1/(4 pi) (1 - g^2) / V^3 * (1 + alpha u^2) / (1 + alpha m2)    */
+/*   V^2  = 1 + g^2 - 2 g u,   m2 = (1 + 2 g^2)/3 = E_HG[u^2].              */
+/*                                                                          */
+/* Reformulated for stability: V^2 is written as a sum of non-negative     */
+/* terms, (1-|g|)^2 + 2|g|(1 - sgn(g) u), so the forward peak of g -> 1     */
+/* keeps full relative precision (the printed form cancels to 0 there).     */
+/* The Draine weight is carried as (c0 + c1 u^2)/(c0 + c1 m2) with          */
+/* (c0, c1) = (1, alpha) for alpha <= 1 and (1/alpha, 1) beyond, so alpha = */
+/* +inf is the exact limit instead of inf/inf.                              */
+/* ======================================================================== */
+
+/* V^2 = 1 + g^2 - 2 g u as a sum of non-negative terms. */
+MIST__F MIST__T MIST__FN(mist__v2)(MIST__T g, MIST__T u)
+{
+    MIST__T ag = g < MIST__C(0) ? -g : g;
+    MIST__T omg = MIST__C(1) - ag;
+    return omg * omg + MIST__C(2) * ag * (g < MIST__C(0) ? MIST__C(1) + u : MIST__C(1) - u);
+}
+
+/* Draine weights (c0, c1) from alpha; see the section comment. */
+MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
+{
+    if (!(alpha > MIST__C(0))) alpha = MIST__C(0);           /* NaN, negative -> 0 */
+    if (alpha <= MIST__C(1)) { *c0 = MIST__C(1); *c1 = alpha; }
+    else               { *c0 = MIST__C(1) / alpha; *c1 = MIST__C(1); }   /* inf -> 0 */
+}
+
+#ifndef MIST__INTERNAL_ONLY
+/* The shared density: HG (c1 = 0) or Draine, at sanitised g, u. */
+MIST__F MIST__T MIST__FN(mist__dens)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T u)
+{
+    MIST__T v2, m2;
+    if (g == MIST__C(1) || g == MIST__C(-1))                   /* Dirac limit */
+        return u == g ? (MIST__T)INFINITY : MIST__C(0);
+    v2 = MIST__FN(mist__v2)(g, u);
+    m2 = (MIST__C(1) + MIST__C(2) * g * g) / MIST__C(3);
+    return MIST__C(MIST__INV4PI) * (MIST__C(1) - g) * (MIST__C(1) + g) / (v2 * MIST__M(sqrt)(v2))
+         * ((c0 + c1 * u * u) / (c0 + c1 * m2));
+}
+
+/* Henyey-Greenstein density per steradian, [JD23 eq. 2].
+ * Domain: g in [-1, 1], u in [-1, 1] (see DOMAIN AND BAD INPUT). */
+MIST__F MIST__T MIST__FN(mist_hg_eval)(MIST__T g, MIST__T u)
+{
+    if (!(u == u)) return MIST__C(0);
+    return MIST__FN(mist__dens)(MIST__FN(mist__g)(g), MIST__C(1), MIST__C(0),
+                                MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1)));
+}
+
+/* Draine density per steradian, [JD23 eq. 5].
+ * Domain: g in [-1, 1], alpha in [0, +inf], u in [-1, 1]. */
+MIST__F MIST__T MIST__FN(mist_draine_eval)(MIST__T g, MIST__T alpha, MIST__T u)
+{
+    MIST__T c0, c1;
+    if (!(u == u)) return MIST__C(0);
+    MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+    return MIST__FN(mist__dens)(MIST__FN(mist__g)(g), c0, c1,
+                                MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1)));
+}
+
+/* Cornette-Shanks density per steradian [CS92]: Draine with alpha = 1. */
+MIST__F MIST__T MIST__FN(mist_cs_eval)(MIST__T g, MIST__T u)
+{
+    return MIST__FN(mist_draine_eval)(g, MIST__C(1), u);
+}
+
+/* Rayleigh density per steradian: 3/(16 pi) (1 + u^2).  Domain u in [-1,1]. */
+MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
+{
+    if (!(u == u)) return MIST__C(0);
+    u = MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1));
+    return MIST__C(MIST__3_16PI) * (MIST__C(1) + u * u);
+}
+
+/* ======================================================================== */
+/* Henyey-Greenstein: exact sampling                                        */
+/* [JD23 eq. 3-4] print  u = (1 + g^2 - t^2)/(2g),  t = (1-g^2)/(1-g+2g xi), */
+/* which divides by g (NaN at g = 0, cancellation for small g: the text's   */
+/* isotropic fallback is wrong by O(g)).  Multiplying out gives the same    */
+/* inverse with no division by g and no sqrt:                               */
+/*   1 + u = 2 xi     (1+g)^2 (1 - g + g xi) / D^2,                        */
+/*   1 - u = 2 (1-xi) (1-g)^2 (1 + g xi)     / D^2,    D = 1 - g + 2 g xi. */
+/* Both are products of non-negative factors (D too, written as a sum of    */
+/* non-negative terms), exact in relative terms.  We use the first for      */
+/* xi <= 1/2 and the mirror image u(g, xi) = -u(-g, 1 - xi) above, where    */
+/* 1 - xi is exact (Sterbenz).                                              */
+/* ======================================================================== */
+
+/* u for g in [0, 1), given x = xi and y = 1 - xi (either may carry the
+ * rounding of 1 - xi: both only enter sums of non-negative terms and
+ * relative factors).  See the section comment. */
+MIST__F MIST__T MIST__FN(mist__hg_core)(MIST__T g, MIST__T x, MIST__T y)
+{
+    MIST__T omg = MIST__C(1) - g, opg = MIST__C(1) + g;
+    MIST__T d  = omg + MIST__C(2) * g * x;      /* D = 1 - g + 2 g xi */
+    MIST__T ea = omg + g * x;                   /*     1 - g +   g xi */
+    MIST__T eb = MIST__C(1) + g * x;            /*     1     +   g xi */
+    MIST__T na = MIST__C(2) * x * (opg * opg) * ea;   /* (1 + u) D^2 */
+    MIST__T nb = MIST__C(2) * y * (omg * omg) * eb;   /* (1 - u) D^2 */
+    MIST__T d2 = d * d;
+    if (MIST__C(3) * na < nb) return na / d2 - MIST__C(1);   /* u < -1/2 */
+    if (MIST__C(3) * nb < na) return MIST__C(1) - nb / d2;   /* u > +1/2 */
+    /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2.  For g >= 0
+     * both terms are O(D^2), so its rounding stays below the bar's
+     * 4 eps xi du/dxi (tests/README.md). */
+    return MIST__FN(mist__fma)(MIST__C(2) * x * (MIST__C(1) + g * g), ea,
+                               -(omg * omg)) / d2;
+}
+
+/* u for g in (-1, 1), xi in [0, 1]: g < 0 by the mirror image
+ * u(g, xi) = -u(-g, 1 - xi). */
+MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
+{
+    MIST__T u = g >= MIST__C(0)
+        ?  MIST__FN(mist__hg_core)( g, xi, MIST__C(1) - xi)
+        : -MIST__FN(mist__hg_core)(-g, MIST__C(1) - xi, xi);
+    return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+}
+
+/* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
+ * Domain: g in [-1, 1], xi in [0, 1]. */
+MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
+{
+    g  = MIST__FN(mist__g)(g);
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+    return MIST__FN(mist__hg_sample)(g, xi);
+}
+
+#endif /* !MIST__INTERNAL_ONLY */
+
+/* ======================================================================== */
+/* Draine and Cornette-Shanks: exact sampling                               */
+/*                                                                          */
+/* [JD23 eq. 6] inverts the CDF with a quartic in closed form.  Typed in    */
+/* verbatim it is NaN at g = 0 and alpha = 0, wrong by 0.056 in u at g =    */
+/* 1e-5 in double, and by 0.82 at g = 0.01, alpha = 250 in float (measured, */
+/* ../shared/references/README.md): its terms cancel as 1/g^3.              */
+/*                                                                          */
+/* mist instead inverts a cancellation-free form of the same CDF by         */
+/* safeguarded Newton iteration.  With V1 = 1 + g, P = V V1, a = 1 + g^2,   */
+/* integrating [JD23 eq. 5] over [-1, u] and dividing out the factors g^3   */
+/* analytically (derivation in tests/README.md) gives                       */
+/*   H(u)  = int_{-1}^u HG = (1-g)(1+u) / (V (V1 + V))          =: K        */
+/*   M2(u) = int_{-1}^u u'^2 HG = K Q / (3 (P + a)),                        */
+/*   Q     = [ (1-u)(P+3a)(a(1-u) - 2gu) + u(3a-P)(P+a) ] / (P + a),        */
+/*   F(u)  = K (c0 + c1 Q / (3(P+a))) / (c0 + c1 m2).                       */
+/* F carries the factor (1 + u): it is accurate in RELATIVE terms in the    */
+/* lower tail.  We solve F(u) = xi for xi <= 1/2 and use the mirror image   */
+/* u(g, xi) = -u(-g, 1 - xi) above, so both tails are resolved to relative  */
+/* precision and 1 - xi is exact.  Newton's steps are kept inside a         */
+/* bracket [lo, hi] (bisection otherwise), so the iteration always          */
+/* converges; it stops when the step is below the bar's own scale           */
+/* eps (|u| + xi / f(u)).                                                   */
+/* ======================================================================== */
+
+/* F(u) for u in [-1, 0], as a sum of non-negative terms for g >= 0 (for
+ * g < 0 the one difference, V (V1^2 + 3a) - 2 g u V1, loses at most a
+ * factor 1.5), and its derivative f = dF/du (= 2 pi p). */
+MIST__F MIST__T MIST__FN(mist__draine_lo)(MIST__T g, MIST__T c0, MIST__T c1,
+                                            MIST__T cn, MIST__T u, MIST__T *f)
+{
+    MIST__T v2 = MIST__FN(mist__v2)(g, u);
+    MIST__T v  = MIST__M(sqrt)(v2);
+    MIST__T v1 = MIST__C(1) + g, a = MIST__C(1) + g * g;
+    MIST__T k  = (MIST__C(1) - g) * (MIST__C(1) + u) / (v * (v1 + v));
+    MIST__T p  = v * v1, pa = p + a;
+    MIST__T qp = (p + MIST__C(3) * a) * (v2 + a * u * u)
+               - u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * g * u * v1);
+    *f = MIST__C(0.5) * (MIST__C(1) - g) * v1 / (v2 * v) * ((c0 + c1 * u * u) / cn);
+    return k * (c0 + c1 * qp / (MIST__C(3) * pa * pa)) / cn;
+}
+
+/* F(u) - F(0) for u in [0, 1], a sum of non-negative terms (V0^2 = a):
+ *   dH  = (1-g^2) u / (V V0 (V0 + V)),
+ *   dM2 = (1-g^2) u^3 (2a + V0 (V0 + V)) / (3 V V0 (V0 + V)^3),
+ * and f = dF/du. */
+MIST__F MIST__T MIST__FN(mist__draine_hi)(MIST__T g, MIST__T c0, MIST__T c1,
+                                            MIST__T cn, MIST__T u, MIST__T *f)
+{
+    MIST__T v2 = MIST__FN(mist__v2)(g, u);
+    MIST__T v  = MIST__M(sqrt)(v2);
+    MIST__T a  = MIST__C(1) + g * g, v0 = MIST__M(sqrt)(a), s = v0 + v;
+    MIST__T omg2 = (MIST__C(1) - g) * (MIST__C(1) + g);
+    MIST__T dh = omg2 * u / (v * v0 * s);
+    *f = MIST__C(0.5) * omg2 / (v2 * v) * ((c0 + c1 * u * u) / cn);
+    return dh * (c0 + c1 * u * u * (MIST__C(2) * a + v0 * s)
+                      / (MIST__C(3) * s * s)) / cn;
+}
+
+#ifndef MIST__INTERNAL_ONLY
+/* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1).
+ * Safeguarded Newton inside [-1, 0] or [0, 1] as x <= F(0) or not. */
+MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
+                                             MIST__T c0, MIST__T c1, MIST__T x)
+{
+    MIST__T cn = c0 + c1 * (MIST__C(1) + MIST__C(2) * g * g) / MIST__C(3);
+    MIST__T f, r, un, lo, hi, t, u;
+    MIST__T f0 = MIST__FN(mist__draine_lo)(g, c0, c1, cn, MIST__C(0), &f);
+    int up = x > f0, it;
+    if (!(x > MIST__C(0))) return MIST__C(-1);
+    lo = up ? MIST__C(0) : MIST__C(-1);
+    hi = up ? MIST__C(1) : MIST__C(0);
+    t  = up ? f0 - x : -x;                      /* F - x = t + (F - F(lo)) */
+    u = MIST__FN(mist__hg_sample)(g, x);        /* the alpha = 0 answer */
+    if (!(u > lo && u < hi)) u = MIST__C(0.5) * (lo + hi);
+    for (it = 0; it < MIST__MAXIT; ++it) {
+        r = up ? t + MIST__FN(mist__draine_hi)(g, c0, c1, cn, u, &f)
+               : MIST__FN(mist__draine_lo)(g, c0, c1, cn, u, &f) - x;
+        if (r > MIST__C(0)) hi = u; else if (r < MIST__C(0)) lo = u; else break;
+        un = f > MIST__C(0) ? u - r / f : lo - MIST__C(1);
+        if (un > lo && un < hi) {               /* a Newton step */
+            r = un - u;
+            u = un;
+            if ((r < MIST__C(0) ? -r : r)
+                <= MIST__C(16) * MIST__EPS * ((u < MIST__C(0) ? -u : u) + x / f))
+                break;
+        } else {                                /* bisection */
+            un = MIST__C(0.5) * (lo + hi);
+            if (un == lo || un == hi) break;    /* bracket is 1 ulp */
+            u = un;
+        }
+    }
+#ifdef MIST__W
+    {   /* One last Newton step with the residual in the wide type: F's ~20
+         * roundings in T (up to 10 eps, measured) would exceed the bar. */
+        MIST__W gw = g, c0w, c1w, cnw, fw, rw, tmp;
+        MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
+        cnw = c0w + c1w * (1 + 2 * gw * gw) / 3;
+        rw = up ? (MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, 0, &tmp) - x)
+                  + MIST__WFN(mist__draine_hi)(gw, c0w, c1w, cnw, u, &fw)
+                : MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, u, &fw) - x;
+        if (fw > 0) {                           /* stay on this side */
+            un = (MIST__T)(u - rw / fw);
+            lo = up ? MIST__C(0) : MIST__C(-1);
+            hi = up ? MIST__C(1) : MIST__C(0);
+            u = un < lo ? lo : (un > hi ? hi : un);
+        }
+    }
+#else
+    (void)alpha;
+#endif
+    return u;
+}
+
+/* Draine: u with P(cos <= u) = xi, exact to a few ulp.
+ * Domain: g in [-1, 1], alpha in [0, +inf], xi in [0, 1]. */
+MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T xi)
+{
+    MIST__T c0, c1, u;
+    g  = MIST__FN(mist__g)(g);
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+    MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+    if (c1 == MIST__C(0)) return MIST__FN(mist__hg_sample)(g, xi);
+    /* xi > 1/2 by the mirror image u(g, xi) = -u(-g, 1 - xi), 1 - xi exact */
+    u = xi <= MIST__C(0.5)
+        ?  MIST__FN(mist__draine_solve)( g, alpha, c0, c1, xi)
+        : -MIST__FN(mist__draine_solve)(-g, alpha, c0, c1, MIST__C(1) - xi);
+    return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+}
+
+/* Cornette-Shanks: Draine with alpha = 1. Domain: g in [-1,1], xi in [0,1]. */
+MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
+{
+    return MIST__FN(mist_draine_sample)(g, MIST__C(1), xi);
+}
+
+/* ======================================================================== */
+/* Rayleigh: exact sampling                                                 */
+/* CDF (u^3 + 3u + 4)/8 = xi: the depressed cubic u^3 + 3u = q, q = 8xi-4,  */
+/* one real root (Cardano): u = A - 1/A,  A^3 = q/2 + sqrt(q^2/4 + 1).      */
+/* A - 1/A cancels near u = 0; with s = A^3 - 1 (computed without           */
+/* cancellation) it is  s (A + 1) / (A (A^2 + A + 1)),  all terms positive. */
+/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG.                       */
+/* ======================================================================== */
+
+MIST__F MIST__T MIST__FN(mist__rayleigh_lower)(MIST__T xi)   /* xi in [0, 1/2], u <= 0 */
+{
+    MIST__T h = MIST__C(2) - MIST__C(4) * xi;                     /* |q|/2 in [0, 2] */
+    MIST__T s = h + h * h / (MIST__M(sqrt)(h * h + MIST__C(1)) + MIST__C(1));
+    MIST__T a = MIST__M(cbrt)(MIST__C(1) + s);
+    return -s * (a + MIST__C(1)) / (a * (a * a + a + MIST__C(1)));
+}
+
+/* Rayleigh: u with P(cos <= u) = xi, exact.  Domain: xi in [0, 1]. */
+MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
+{
+    MIST__T u;
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    u = xi <= MIST__C(0.5) ? MIST__FN(mist__rayleigh_lower)(xi)
+                     : -MIST__FN(mist__rayleigh_lower)(MIST__C(1) - xi);
+    return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+}
+
+/* ======================================================================== */
+/* The Jendersie-d'Eon fog phase function [JD23 eq. 1]                      */
+/* (1 - w_d) HG(g_hg) + w_d Draine(g_d, alpha).  Sampling as the            */
+/* supplemental says: one xi picks the Draine lobe when xi < w_d, and is    */
+/* rescaled to [0, 1] and reused for the lobe.  The density (and so the pdf */
+/* of a sample) is the whole mixture's, as multiple importance sampling     */
+/* needs.  The mixture sampler is exact but NOT monotone in xi.             */
+/* ======================================================================== */
+
+/* A fog phase function from its four parameters, sanitised: g's clamped to
+ * [-1, 1] (NaN -> 0), alpha >= 0 (NaN, negative -> 0), w_d in [0, 1]. */
+MIST__F MIST__FOG MIST__FN(mist_fog_make)(MIST__T g_hg, MIST__T g_d, MIST__T alpha, MIST__T w_d)
+{
+    MIST__FOG f;
+    f.g_hg  = MIST__FN(mist__g)(g_hg);
+    f.g_d   = MIST__FN(mist__g)(g_d);
+    f.alpha = alpha > MIST__C(0) ? alpha : MIST__C(0);
+    f.w_d   = MIST__FN(mist__clamp)(w_d, MIST__C(0), MIST__C(1));
+    return f;
+}
+
+/* Fog density per steradian.  Domain: u in [-1, 1]; the parameters are
+ * sanitised again here, so a hand-filled struct is safe too. */
+MIST__F MIST__T MIST__FN(mist_fog_eval)(MIST__FOG fog, MIST__T u)
+{
+    MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
+    MIST__T d = w > MIST__C(0) ? MIST__FN(mist_draine_eval)(fog.g_d, fog.alpha, u) : MIST__C(0);
+    MIST__T h = w < MIST__C(1) ? MIST__FN(mist_hg_eval)(fog.g_hg, u) : MIST__C(0);
+    return (MIST__C(1) - w) * h + w * d;
+}
+
+/* Fog: a sample u of the mixture, from one xi in [0, 1]. */
+MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
+{
+    MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    if (xi < w)
+        return MIST__FN(mist_draine_sample)(fog.g_d, fog.alpha, xi / w);
+    return MIST__FN(mist_hg_sample)(fog.g_hg,
+                                    w < MIST__C(1) ? (xi - w) / (MIST__C(1) - w) : MIST__C(0));
+}
+
+/* ======================================================================== */
+/* Directions                                                               */
+/* The frame around the propagation direction is the branchless orthonormal */
+/* basis of [DHB17], exact to rounding for every unit direction (including  */
+/* the poles, where the classic Frisvad frame breaks).  sin(theta) is       */
+/* sqrt((1-u)(1+u)): no cancellation near u = +-1.                          */
+/* ======================================================================== */
+
+/* Unit vector along v; zero, NaN or infinite v gives (0, 0, 1).  Scaled by
+ * the largest component first, so no overflow or underflow. */
+MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
+{
+    MIST__T ax = v.x < MIST__C(0) ? -v.x : v.x, ay = v.y < MIST__C(0) ? -v.y : v.y;
+    MIST__T az = v.z < MIST__C(0) ? -v.z : v.z;
+    MIST__T m = ax > ay ? ax : ay, il;
+    m = m > az ? m : az;
+    if (!(m > MIST__C(0)) || !(m - m == MIST__C(0))) {       /* 0, NaN, inf */
+        v.x = MIST__C(0); v.y = MIST__C(0); v.z = MIST__C(1);
+        return v;
+    }
+    v.x /= m; v.y /= m; v.z /= m;
+    il = MIST__C(1) / MIST__M(sqrt)(v.x * v.x + v.y * v.y + v.z * v.z);
+    v.x *= il; v.y *= il; v.z *= il;
+    return v;
+}
+
+/* The direction at cosine u to wi and azimuth 2 pi xi around it.
+ * Domain: wi any vector (normalised as mist_normalize), u in [-1, 1],
+ * xi in [0, 1]. */
+MIST__F MIST__V3 MIST__FN(mist_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi)
+{
+    MIST__V3 n = MIST__FN(mist_normalize)(wi), t, b, o;
+    MIST__T sgn = n.z >= MIST__C(0) ? MIST__C(1) : MIST__C(-1);
+    MIST__T a = MIST__C(-1) / (sgn + n.z), bb = n.x * n.y * a;
+    MIST__T s, phi, cp, sp;
+    u  = MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1));
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    s = MIST__M(sqrt)((MIST__C(1) - u) * (MIST__C(1) + u));
+    phi = MIST__C(MIST__2PI) * xi;
+    cp = MIST__M(cos)(phi); sp = MIST__M(sin)(phi);
+    t.x = MIST__C(1) + sgn * n.x * n.x * a; t.y = sgn * bb; t.z = -sgn * n.x;
+    b.x = bb; b.y = sgn + n.y * n.y * a; b.z = -n.y;
+    o.x = u * n.x + s * (cp * t.x + sp * b.x);
+    o.y = u * n.y + s * (cp * t.y + sp * b.y);
+    o.z = u * n.z + s * (cp * t.z + sp * b.z);
+    return o;
+}
+
+/* Scattered direction and its pdf (= the density, per steradian) for each
+ * phase function.  wi: the incident PROPAGATION direction; xi1 picks
+ * cos(theta) (exact inverse CDF), xi2 the azimuth.  pdf may be NULL. */
+MIST__F MIST__V3 MIST__FN(mist_hg_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+                                                MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist_hg_sample)(g, xi1);
+    if (pdf) *pdf = MIST__FN(mist_hg_eval)(g, u);
+    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+}
+
+MIST__F MIST__V3 MIST__FN(mist_draine_sample_dir)(MIST__T g, MIST__T alpha, MIST__V3 wi,
+                                                    MIST__T xi1, MIST__T xi2, MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist_draine_sample)(g, alpha, xi1);
+    if (pdf) *pdf = MIST__FN(mist_draine_eval)(g, alpha, u);
+    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+}
+
+MIST__F MIST__V3 MIST__FN(mist_cs_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+                                                MIST__T *pdf)
+{
+    return MIST__FN(mist_draine_sample_dir)(g, MIST__C(1), wi, xi1, xi2, pdf);
+}
+
+MIST__F MIST__V3 MIST__FN(mist_rayleigh_sample_dir)(MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+                                                      MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist_rayleigh_sample)(xi1);
+    if (pdf) *pdf = MIST__FN(mist_rayleigh_eval)(u);
+    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+}
+
+MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
+                                                 MIST__T xi1, MIST__T xi2, MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist_fog_sample)(fog, xi1);
+    if (pdf) *pdf = MIST__FN(mist_fog_eval)(fog, u);
+    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+}
+
+#endif /* !MIST__INTERNAL_ONLY */
+
+#undef MIST__C
+
+#endif /* MIST__TEMPLATE */
+
+/*
+MIT License
+
+Copyright (c) 2026 the mist authors
+
+Permission is hereby granted, free of charge, to any person obtaining a copy
+of this software and associated documentation files (the "Software"), to deal
+in the Software without restriction, including without limitation the rights
+to use, copy, modify, merge, publish, distribute, sublicense, and/or sell
+copies of the Software, and to permit persons to whom the Software is
+furnished to do so, subject to the following conditions:
+
+The above copyright notice and this permission notice shall be included in all
+copies or substantial portions of the Software.
+
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+SOFTWARE.
+*/
