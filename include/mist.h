@@ -265,6 +265,68 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
     else               { *c0 = MIST__C(1) / alpha; *c1 = MIST__C(1); }   /* inf -> 0 */
 }
 
+/* ======================================================================== */
+/* Henyey-Greenstein: exact sampling                                        */
+/* [JD23 eq. 3-4] print  u = (1 + g^2 - t^2)/(2g),  t = (1-g^2)/(1-g+2g xi), */
+/* which divides by g (NaN at g = 0, cancellation for small g: the text's   */
+/* isotropic fallback is wrong by O(g)).  Multiplying out gives the same    */
+/* inverse with no division by g and no sqrt:                               */
+/*   1 + u = 2 xi     (1+g)^2 (1 - g + g xi) / D^2,                        */
+/*   1 - u = 2 (1-xi) (1-g)^2 (1 + g xi)     / D^2,    D = 1 - g + 2 g xi. */
+/* Both are products of non-negative factors (D too, written as a sum of    */
+/* non-negative terms), exact in relative terms.  We use the first for      */
+/* xi <= 1/2 and the mirror image u(g, xi) = -u(-g, 1 - xi) above, where    */
+/* 1 - xi is exact (Sterbenz).                                              */
+/* ======================================================================== */
+
+/* u for g in [0, 1), given x = xi and y = 1 - xi (either may carry the
+ * rounding of 1 - xi: both only enter sums of non-negative terms and
+ * relative factors).  See the section comment. */
+MIST__F MIST__T MIST__FN(mist__hg_core)(MIST__T g, MIST__T x, MIST__T y)
+{
+    MIST__T omg = MIST__C(1) - g, opg = MIST__C(1) + g;
+    MIST__T d  = omg + MIST__C(2) * g * x;      /* D = 1 - g + 2 g xi */
+    MIST__T ea = omg + g * x;                   /*     1 - g +   g xi */
+    MIST__T eb = MIST__C(1) + g * x;            /*     1     +   g xi */
+    MIST__T na = MIST__C(2) * x * (opg * opg) * ea;   /* (1 + u) D^2 */
+    MIST__T nb = MIST__C(2) * y * (omg * omg) * eb;   /* (1 - u) D^2 */
+    MIST__T d2 = d * d;
+    if (MIST__C(3) * na < nb) return na / d2 - MIST__C(1);   /* u < -1/2 */
+    if (MIST__C(3) * nb < na) return MIST__C(1) - nb / d2;   /* u > +1/2 */
+    /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2.  For g >= 0
+     * both terms are O(D^2), so its rounding stays below the bar's
+     * 4 eps xi du/dxi (tests/README.md). */
+    return MIST__FN(mist__fma)(MIST__C(2) * x * (MIST__C(1) + g * g), ea,
+                               -(omg * omg)) / d2;
+}
+
+/* u for g in (-1, 1), xi in [0, 1]: g < 0 by the mirror image
+ * u(g, xi) = -u(-g, 1 - xi). */
+MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
+{
+    MIST__T u = g >= MIST__C(0)
+        ?  MIST__FN(mist__hg_core)( g, xi, MIST__C(1) - xi)
+        : -MIST__FN(mist__hg_core)(-g, MIST__C(1) - xi, xi);
+    return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+}
+
+/* ======================================================================== */
+/* Rayleigh: exact sampling                                                 */
+/* CDF (u^3 + 3u + 4)/8 = xi: the depressed cubic u^3 + 3u = q, q = 8xi-4,  */
+/* one real root (Cardano): u = A - 1/A,  A^3 = q/2 + sqrt(q^2/4 + 1).      */
+/* A - 1/A cancels near u = 0; with s = A^3 - 1 (computed without           */
+/* cancellation) it is  s (A + 1) / (A (A^2 + A + 1)),  all terms positive. */
+/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG.                       */
+/* ======================================================================== */
+
+MIST__F MIST__T MIST__FN(mist__rayleigh_lower)(MIST__T xi)   /* xi in [0, 1/2], u <= 0 */
+{
+    MIST__T h = MIST__C(2) - MIST__C(4) * xi;                     /* |q|/2 in [0, 2] */
+    MIST__T s = h + h * h / (MIST__M(sqrt)(h * h + MIST__C(1)) + MIST__C(1));
+    MIST__T a = MIST__M(cbrt)(MIST__C(1) + s);
+    return -s * (a + MIST__C(1)) / (a * (a * a + a + MIST__C(1)));
+}
+
 #ifndef MIST__INTERNAL_ONLY
 /* The shared density: HG (c1 = 0) or Draine, at sanitised g, u. */
 MIST__F MIST__T MIST__FN(mist__dens)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T u)
@@ -312,51 +374,6 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
     return MIST__C(MIST__3_16PI) * (MIST__C(1) + u * u);
 }
 
-/* ======================================================================== */
-/* Henyey-Greenstein: exact sampling                                        */
-/* [JD23 eq. 3-4] print  u = (1 + g^2 - t^2)/(2g),  t = (1-g^2)/(1-g+2g xi), */
-/* which divides by g (NaN at g = 0, cancellation for small g: the text's   */
-/* isotropic fallback is wrong by O(g)).  Multiplying out gives the same    */
-/* inverse with no division by g and no sqrt:                               */
-/*   1 + u = 2 xi     (1+g)^2 (1 - g + g xi) / D^2,                        */
-/*   1 - u = 2 (1-xi) (1-g)^2 (1 + g xi)     / D^2,    D = 1 - g + 2 g xi. */
-/* Both are products of non-negative factors (D too, written as a sum of    */
-/* non-negative terms), exact in relative terms.  We use the first for      */
-/* xi <= 1/2 and the mirror image u(g, xi) = -u(-g, 1 - xi) above, where    */
-/* 1 - xi is exact (Sterbenz).                                              */
-/* ======================================================================== */
-
-/* u for g in [0, 1), given x = xi and y = 1 - xi (either may carry the
- * rounding of 1 - xi: both only enter sums of non-negative terms and
- * relative factors).  See the section comment. */
-MIST__F MIST__T MIST__FN(mist__hg_core)(MIST__T g, MIST__T x, MIST__T y)
-{
-    MIST__T omg = MIST__C(1) - g, opg = MIST__C(1) + g;
-    MIST__T d  = omg + MIST__C(2) * g * x;      /* D = 1 - g + 2 g xi */
-    MIST__T ea = omg + g * x;                   /*     1 - g +   g xi */
-    MIST__T eb = MIST__C(1) + g * x;            /*     1     +   g xi */
-    MIST__T na = MIST__C(2) * x * (opg * opg) * ea;   /* (1 + u) D^2 */
-    MIST__T nb = MIST__C(2) * y * (omg * omg) * eb;   /* (1 - u) D^2 */
-    MIST__T d2 = d * d;
-    if (MIST__C(3) * na < nb) return na / d2 - MIST__C(1);   /* u < -1/2 */
-    if (MIST__C(3) * nb < na) return MIST__C(1) - nb / d2;   /* u > +1/2 */
-    /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2.  For g >= 0
-     * both terms are O(D^2), so its rounding stays below the bar's
-     * 4 eps xi du/dxi (tests/README.md). */
-    return MIST__FN(mist__fma)(MIST__C(2) * x * (MIST__C(1) + g * g), ea,
-                               -(omg * omg)) / d2;
-}
-
-/* u for g in (-1, 1), xi in [0, 1]: g < 0 by the mirror image
- * u(g, xi) = -u(-g, 1 - xi). */
-MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
-{
-    MIST__T u = g >= MIST__C(0)
-        ?  MIST__FN(mist__hg_core)( g, xi, MIST__C(1) - xi)
-        : -MIST__FN(mist__hg_core)(-g, MIST__C(1) - xi, xi);
-    return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
-}
-
 /* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
  * Domain: g in [-1, 1], xi in [0, 1]. */
 MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
@@ -364,7 +381,11 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
     g  = MIST__FN(mist__g)(g);
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+#ifdef MIST__W   /* in the wide type: 0.5 ulp instead of up to 4.4 (measured) */
+    return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
+#else
     return MIST__FN(mist__hg_sample)(g, xi);
+#endif
 }
 
 #endif /* !MIST__INTERNAL_ONLY */
@@ -462,20 +483,29 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
         }
     }
 #ifdef MIST__W
-    {   /* One last Newton step with the residual in the wide type: F's ~20
-         * roundings in T (up to 10 eps, measured) would exceed the bar. */
-        MIST__W gw = g, c0w, c1w, cnw, fw, rw, tmp;
+    {   /* Finish with Newton steps in the wide type: F's ~20 roundings in T
+         * (up to 10 eps, measured) would exceed the bar, and near the peak of
+         * |g| -> 1 one step from T's answer still leaves half an ulp of
+         * curvature error (measured at g = 0.999 in float), so iterate until
+         * the step is far below T's ulp (at most 4 steps; 1-2 in practice). */
+        MIST__W gw = g, uw = u, c0w, c1w, cnw, fw, rw, tw = 0, sw;
         MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
         cnw = c0w + c1w * (1 + 2 * gw * gw) / 3;
-        rw = up ? (MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, 0, &tmp) - x)
-                  + MIST__WFN(mist__draine_hi)(gw, c0w, c1w, cnw, u, &fw)
-                : MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, u, &fw) - x;
-        if (fw > 0) {                           /* stay on this side */
-            un = (MIST__T)(u - rw / fw);
-            lo = up ? MIST__C(0) : MIST__C(-1);
-            hi = up ? MIST__C(1) : MIST__C(0);
-            u = un < lo ? lo : (un > hi ? hi : un);
+        if (up) tw = MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, 0, &fw) - x;
+        lo = up ? MIST__C(0) : MIST__C(-1);
+        hi = up ? MIST__C(1) : MIST__C(0);
+        for (it = 0; it < 4; ++it) {
+            rw = up ? tw + MIST__WFN(mist__draine_hi)(gw, c0w, c1w, cnw, uw, &fw)
+                    : MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, uw, &fw) - x;
+            if (!(fw > 0)) break;
+            sw = rw / fw;
+            uw -= sw;                           /* stay on this side */
+            uw = uw < lo ? lo : (uw > hi ? hi : uw);
+            if ((sw < 0 ? -sw : sw)
+                <= MIST__EPS / 64 * ((uw < 0 ? -uw : uw) + x / fw))
+                break;
         }
+        u = (MIST__T)uw;
     }
 #else
     (void)alpha;
@@ -492,7 +522,7 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
-    if (c1 == MIST__C(0)) return MIST__FN(mist__hg_sample)(g, xi);
+    if (c1 == MIST__C(0)) return MIST__FN(mist_hg_sample)(g, xi);
     /* xi > 1/2 by the mirror image u(g, xi) = -u(-g, 1 - xi), 1 - xi exact */
     u = xi <= MIST__C(0.5)
         ?  MIST__FN(mist__draine_solve)( g, alpha, c0, c1, xi)
@@ -506,30 +536,19 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
     return MIST__FN(mist_draine_sample)(g, MIST__C(1), xi);
 }
 
-/* ======================================================================== */
-/* Rayleigh: exact sampling                                                 */
-/* CDF (u^3 + 3u + 4)/8 = xi: the depressed cubic u^3 + 3u = q, q = 8xi-4,  */
-/* one real root (Cardano): u = A - 1/A,  A^3 = q/2 + sqrt(q^2/4 + 1).      */
-/* A - 1/A cancels near u = 0; with s = A^3 - 1 (computed without           */
-/* cancellation) it is  s (A + 1) / (A (A^2 + A + 1)),  all terms positive. */
-/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG.                       */
-/* ======================================================================== */
-
-MIST__F MIST__T MIST__FN(mist__rayleigh_lower)(MIST__T xi)   /* xi in [0, 1/2], u <= 0 */
-{
-    MIST__T h = MIST__C(2) - MIST__C(4) * xi;                     /* |q|/2 in [0, 2] */
-    MIST__T s = h + h * h / (MIST__M(sqrt)(h * h + MIST__C(1)) + MIST__C(1));
-    MIST__T a = MIST__M(cbrt)(MIST__C(1) + s);
-    return -s * (a + MIST__C(1)) / (a * (a * a + a + MIST__C(1)));
-}
-
 /* Rayleigh: u with P(cos <= u) = xi, exact.  Domain: xi in [0, 1]. */
 MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 {
     MIST__T u;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
-    u = xi <= MIST__C(0.5) ? MIST__FN(mist__rayleigh_lower)(xi)
-                     : -MIST__FN(mist__rayleigh_lower)(MIST__C(1) - xi);
+#ifdef MIST__W   /* in the wide type: 0.5 ulp instead of up to 7 (measured) */
+    u = xi <= MIST__C(0.5)
+        ?  (MIST__T)MIST__WFN(mist__rayleigh_lower)((MIST__W)xi)
+        : -(MIST__T)MIST__WFN(mist__rayleigh_lower)((MIST__W)(MIST__C(1) - xi));
+#else
+    u = xi <= MIST__C(0.5) ?  MIST__FN(mist__rayleigh_lower)(xi)
+                           : -MIST__FN(mist__rayleigh_lower)(MIST__C(1) - xi);
+#endif
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
 

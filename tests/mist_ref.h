@@ -21,18 +21,18 @@
 
 __extension__ typedef __float128 qreal;
 
-static qreal ref_sqrtq(qreal a)
+static inline qreal ref_sqrtq(qreal a)
 {
     qreal x;
     if (a <= 0) return 0;
     x = (qreal)sqrt((double)a);           /* 53 bits, then two Newton steps */
-    x = 0.5Q * (x + a / x);
-    x = 0.5Q * (x + a / x);
+    x = (x + a / x) / 2;
+    x = (x + a / x) / 2;
     return x;
 }
 
 /* Legendre P_n and derivative at x */
-static void ref_legendre(int n, qreal x, qreal *p, qreal *dp)
+static inline void ref_legendre(int n, qreal x, qreal *p, qreal *dp)
 {
     qreal p0 = 1, p1 = x, p2;
     int k;
@@ -48,7 +48,7 @@ static void ref_legendre(int n, qreal x, qreal *p, qreal *dp)
 static qreal ref_gl_x[REF_GL_N], ref_gl_w[REF_GL_N];
 static int ref_gl_ready = 0;
 
-static void ref_gl_init(void)
+static inline void ref_gl_init(void)
 {
     int i, it;
     const double pi = 3.14159265358979323846;
@@ -66,7 +66,7 @@ static void ref_gl_init(void)
 }
 
 /* Density of u = cos(theta) (per unit u, integrates to 1 over [-1, 1]). */
-static qreal ref_density_u(qreal g, qreal a, qreal u)
+static inline qreal ref_density_u(qreal g, qreal a, qreal u)
 {
     qreal s = 1 + g * g - 2 * g * u;
     return (1 - g * g) / (2 * s * ref_sqrtq(s)) * (1 + a * u * u)
@@ -74,11 +74,11 @@ static qreal ref_density_u(qreal g, qreal a, qreal u)
 }
 
 /* P(cos <= u) for the Draine phase function (g in (-1,1), a = alpha). */
-static qreal ref_cdf(qreal g, qreal a, qreal u)
+static inline qreal ref_cdf(qreal g, qreal a, qreal u)
 {
     if (u <= -1) return 0;
     if (u >= 1) return 1;
-    if (g < 1e-3Q && g > -1e-3Q) {
+    if (g < (qreal)1e-3 && g > -(qreal)1e-3) {
         qreal h = (u + 1) / 2, m = (u - 1) / 2, sum = 0;  /* [-1, u] */
         int i;
         if (!ref_gl_ready) ref_gl_init();
@@ -102,7 +102,7 @@ static qreal ref_cdf(qreal g, qreal a, qreal u)
  * from any start; `start` only saves iterations (it may come from the code
  * under test: the answer is defined by the CDF alone).  Converged when the
  * bracket or the step is below 1e-30.  |g| = 1 returns g (the delta). */
-static qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
+static inline qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
 {
     qreal lo = -1, hi = 1, u = start, f, r, un;
     int it;
@@ -117,13 +117,13 @@ static qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
         f = ref_density_u(g, a, u);
         un = u - r / f;
         if (!(un > lo && un < hi)) un = (lo + hi) / 2;
-        if ((un - u < 1e-30Q && u - un < 1e-30Q) || hi - lo < 1e-30Q) return un;
+        if ((un - u < (qreal)1e-30 && u - un < (qreal)1e-30) || hi - lo < (qreal)1e-30) return un;
         u = un;
     }
     return u;
 }
 
-static qreal ref_sample(qreal g, qreal a, qreal xi)
+static inline qreal ref_sample(qreal g, qreal a, qreal xi)
 {
     return ref_sample_from(g, a, xi, 0);
 }

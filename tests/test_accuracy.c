@@ -1,0 +1,215 @@
+/* test_accuracy.c - the samplers are exact: every sample u of HG, Draine,
+ * Cornette-Shanks and Rayleigh, in double and float, is checked against an
+ * independent __float128 inversion of the exact CDF (tests/mist_ref.h):
+ *
+ *     |u - u*| <= 4 ulp(u*) + 4 eps xi du/dxi,   du/dxi = 1 / (2 pi p(u*))
+ *
+ * with eps = 2^-53 (double) or 2^-24 (float): a few ulps, plus what the
+ * rounding of xi itself allows.  ulp(u*) is the spacing of the type's
+ * numbers at u* (at u* = 0: the smallest subnormal).  For float the
+ * reference is computed at the float-rounded g, alpha and xi, the inputs the
+ * float function actually receives.
+ *
+ * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
+ * and the Dirac limits |g| = 1.  Mirrors the "exact sampling" sections of
+ * include/mist.h. */
+#include "mist.h"
+#include "mist_ref.h"
+#include "mist_test.h"
+
+#include <float.h>
+
+enum { KIND_HG, KIND_DRAINE, KIND_CS, KIND_RAYLEIGH };
+static const char *kind_name[] = { "hg", "draine", "cs", "rayleigh" };
+
+static double ulp_d(double x) { x = fabs(x); return nextafter(x, INFINITY) - x; }
+static double ulp_f(float x)  { x = fabsf(x); return (double)(nextafterf(x, INFINITY) - x); }
+
+static double sample_d(int kind, double g, double a, double xi)
+{
+    switch (kind) {
+    case KIND_HG:     return mist_hg_sample(g, xi);
+    case KIND_DRAINE: return mist_draine_sample(g, a, xi);
+    case KIND_CS:     return mist_cs_sample(g, xi);
+    default:          return mist_rayleigh_sample(xi);
+    }
+}
+
+static float sample_f(int kind, float g, float a, float xi)
+{
+    switch (kind) {
+    case KIND_HG:     return mist_hg_samplef(g, xi);
+    case KIND_DRAINE: return mist_draine_samplef(g, a, xi);
+    case KIND_CS:     return mist_cs_samplef(g, xi);
+    default:          return mist_rayleigh_samplef(xi);
+    }
+}
+
+/* the (g, alpha) the reference must use for each kind */
+static void ref_params(int kind, double g, double a, double *rg, double *ra)
+{
+    *rg = kind == KIND_RAYLEIGH ? 0 : g;
+    *ra = kind == KIND_HG ? 0 : (kind == KIND_DRAINE ? a : 1);
+}
+
+static double worst_d = 0, worst_f = 0;
+static long n_points = 0;
+
+/* Checks one xi in both precisions; returns 1 if both meet the bar. */
+static int check_point(int kind, double g, double a, double xi)
+{
+    double rg, ra, u, us, tol, r;
+    float gf = (float)g, af = (float)a, xf = (float)xi, uf;
+    int ok = 1;
+    ++n_points;
+
+    /* double */
+    ref_params(kind, g, a, &rg, &ra);
+    u = sample_d(kind, g, a, xi);
+    us = (double)ref_sample_from(rg, ra, xi, u);
+    tol = 4 * ulp_d(us);
+    if (fabs(rg) < 1) tol += 4 * 0x1p-53 * xi / (double)ref_density_u(rg, ra, us);
+    r = fabs(u - us) / tol;
+    if (r > worst_d) worst_d = r;
+    ok &= mt_check(r <= 1, "%s double g=%.17g alpha=%.17g xi=%.17g: u=%.17g u*=%.17g "
+                   "(%.2f x the bound)", kind_name[kind], g, a, xi, u, us, r);
+
+    /* float */
+    ref_params(kind, gf, af, &rg, &ra);
+    uf = sample_f(kind, gf, af, xf);
+    us = (double)ref_sample_from(rg, ra, xf, uf);
+    tol = 4 * ulp_f((float)us);
+    if (fabs(rg) < 1) tol += 4 * 0x1p-24 * xf / (double)ref_density_u(rg, ra, us);
+    r = fabs(uf - us) / tol;
+    if (r > worst_f) worst_f = r;
+    ok &= mt_check(r <= 1, "%s float g=%.9g alpha=%.9g xi=%.9g: u=%.9g u*=%.9g "
+                   "(%.2f x the bound)", kind_name[kind], gf, af, xf, uf, us, r);
+    return ok;
+}
+
+/* The grid of the issue: g, alpha and the named xi, plus random xi
+ * (uniform, and crowded towards both ends, where the tails are). */
+static const double grid_g[] = { 0, 1e-7, -1e-7, 1e-4, -1e-4, 1e-2, -1e-2, 0.3,
+                                 -0.3, 0.9, -0.9, 0.999, -0.999 };
+static const double grid_a[] = { 0, 1e-6, 1e-3, 1, 17, 250, 1e3, 1e4 };
+static const double named_xi[] = { 0, 1e-7, 0.5, 1 - 0x1p-24, 1, 0x1p-60, 1 - 0x1p-53,
+                                   0.25, 0.75 };
+
+static double random_xi(mt_rng *r, int k)
+{
+    double x = mt_uniform(r);
+    if (k % 3 == 1) return pow(x, 8);          /* crowd xi towards 0 */
+    if (k % 3 == 2) return 1 - pow(x, 8);      /* and towards 1 */
+    return x;
+}
+
+static void test_grid(int kind, int nrand)
+{
+    mt_rng rng = { 12345u + (uint64_t)kind };
+    size_t ig, ia, k;
+    size_t na = kind == KIND_DRAINE ? sizeof grid_a / sizeof *grid_a : 1;
+    size_t ng = kind == KIND_RAYLEIGH ? 1 : sizeof grid_g / sizeof *grid_g;
+    for (ig = 0; ig < ng; ++ig)
+        for (ia = 0; ia < na; ++ia) {
+            for (k = 0; k < sizeof named_xi / sizeof *named_xi; ++k)
+                check_point(kind, grid_g[ig], grid_a[ia], named_xi[k]);
+            for (k = 0; k < (size_t)nrand; ++k)
+                check_point(kind, grid_g[ig], grid_a[ia], random_xi(&rng, (int)k));
+        }
+}
+
+/* Random parameters over the whole domain: g uniform and log-uniform in
+ * magnitude down to 1e-9, alpha log-uniform over [1e-8, 1e8]. */
+static void test_random_params(int n)
+{
+    mt_rng rng = { 777 };
+    int k;
+    for (k = 0; k < n; ++k) {
+        double s = mt_uniform(&rng) < 0.5 ? -1 : 1;
+        double g = (k & 1) ? s * mt_uniform(&rng) : s * pow(10, -9 * mt_uniform(&rng));
+        double a = pow(10, -8 + 16 * mt_uniform(&rng));
+        check_point(k % 4 == 0 ? KIND_HG : KIND_DRAINE, g, a, random_xi(&rng, k));
+    }
+}
+
+/* |g| = 1 is the Dirac limit: every xi gives u = g exactly. */
+static void test_delta(void)
+{
+    static const double xs[] = { 0, 1e-9, 0.5, 1 };
+    size_t i;
+    for (i = 0; i < sizeof xs / sizeof *xs; ++i) {
+        double x = xs[i];
+        mt_check(mist_hg_sample(1, x) == 1 && mist_hg_sample(-1, x) == -1 &&
+                 mist_draine_sample(1, 17, x) == 1 && mist_draine_sample(-1, 17, x) == -1 &&
+                 mist_cs_sample(1, x) == 1 && mist_cs_sample(-1, x) == -1,
+                 "|g| = 1 samples u = g (xi=%g)", x);
+        mt_check(mist_hg_samplef(1, (float)x) == 1 && mist_hg_samplef(-1, (float)x) == -1 &&
+                 mist_draine_samplef(1, 17, (float)x) == 1 &&
+                 mist_draine_samplef(-1, 17, (float)x) == -1,
+                 "|g| = 1 samples u = g in float (xi=%g)", x);
+    }
+}
+
+/* Monotone in xi: over sorted random xi, and over runs of adjacent floats
+ * (the finest xi steps there are, where rounding would show). */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static void test_monotone(void)
+{
+    static const double gs[] = { 0, 1e-4, -0.3, 0.9, 0.999, -0.999 };
+    static const double as[] = { 0, 1, 250, 1e4 };
+    enum { N = 4000, RUN = 200 };
+    static double xs[N];
+    mt_rng rng = { 99 };
+    size_t ig, ia;
+    int k, kind, bad_d, bad_f;
+    for (k = 0; k < N; ++k) xs[k] = random_xi(&rng, k);
+    qsort(xs, N, sizeof *xs, cmp_double);
+    for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
+        for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
+            for (ia = 0; ia < (kind == KIND_DRAINE ? sizeof as / sizeof *as : 1); ++ia) {
+                double g = gs[ig], a = as[ia], prev = -2;
+                float prevf = -2, xf;
+                bad_d = bad_f = 0;
+                for (k = 0; k < N; ++k) {
+                    double u = sample_d(kind, g, a, xs[k]);
+                    float uf = sample_f(kind, (float)g, (float)a, (float)xs[k]);
+                    bad_d += u < prev; prev = u;
+                    bad_f += uf < prevf; prevf = uf;
+                }
+                /* runs of adjacent floats around a few xi */
+                for (k = 0; k < 3; ++k) {
+                    double x = k == 0 ? 0.3 : (k == 1 ? 0.5 : 0.97);
+                    int j;
+                    prev = -2; prevf = -2; xf = (float)x;
+                    for (j = 0; j < RUN; ++j) {
+                        double u = sample_d(kind, g, a, x);
+                        float uf = sample_f(kind, (float)g, (float)a, xf);
+                        bad_d += u < prev; prev = u;
+                        bad_f += uf < prevf; prevf = uf;
+                        x = nextafter(x, 2);
+                        xf = nextafterf(xf, 2);
+                    }
+                }
+                mt_check(bad_d == 0 && bad_f == 0,
+                         "%s g=%g alpha=%g monotone in xi (%d double, %d float "
+                         "decreases)", kind_name[kind], g, a, bad_d, bad_f);
+            }
+}
+
+int main(void)
+{
+    int kind;
+    for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
+        test_grid(kind, kind == KIND_DRAINE ? 150 : 400);
+    test_random_params(3000);
+    test_delta();
+    test_monotone();
+    printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f, float %.3f\n",
+           n_points, worst_d, worst_f);
+    return mt_done("test_accuracy");
+}
