@@ -270,13 +270,18 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* [JD23 eq. 3-4] print  u = (1 + g^2 - t^2)/(2g),  t = (1-g^2)/(1-g+2g xi), */
 /* which divides by g (NaN at g = 0, cancellation for small g: the text's   */
 /* isotropic fallback is wrong by O(g)).  Multiplying out gives the same    */
-/* inverse with no division by g and no sqrt:                               */
-/*   1 + u = 2 xi     (1+g)^2 (1 - g + g xi) / D^2,                        */
-/*   1 - u = 2 (1-xi) (1-g)^2 (1 + g xi)     / D^2,    D = 1 - g + 2 g xi. */
-/* Both are products of non-negative factors (D too, written as a sum of    */
-/* non-negative terms), exact in relative terms.  We use the first for      */
-/* xi <= 1/2 and the mirror image u(g, xi) = -u(-g, 1 - xi) above, where    */
-/* 1 - xi is exact (Sterbenz).                                              */
+/* inverse with no division by g and no sqrt (D = 1 - g + 2 g xi):          */
+/*   1 + u = 2 xi     (1+g)^2 (1 - g + g xi) / D^2    used for u < -1/2,    */
+/*   1 - u = 2 (1-xi) (1-g)^2 (1 + g xi)     / D^2    used for u > +1/2,    */
+/*   u     = (2 xi (1+g^2)(1 - g + g xi) - (1-g)^2) / D^2   in between.     */
+/* The first two are products of non-negative factors (exact in relative    */
+/* terms, so the tails keep full precision); in the third, for g >= 0, both */
+/* terms are O(D^2), so its cancellation near u = 0 costs no more than the  */
+/* rounding of xi itself.  g < 0 by the mirror image u(g,xi) = -u(-g,1-xi). */
+/* Measured against a float128 inversion this is within 1.1x the bar of     */
+/* tests/test_accuracy.c in T; the public functions therefore evaluate it   */
+/* in the wider type (long double for double, double for float: a dozen     */
+/* operations) and are correctly rounded in practice (0.25x the bar).       */
 /* ======================================================================== */
 
 /* u for g in [0, 1), given x = xi and y = 1 - xi (either may carry the
@@ -293,9 +298,7 @@ MIST__F MIST__T MIST__FN(mist__hg_core)(MIST__T g, MIST__T x, MIST__T y)
     MIST__T d2 = d * d;
     if (MIST__C(3) * na < nb) return na / d2 - MIST__C(1);   /* u < -1/2 */
     if (MIST__C(3) * nb < na) return MIST__C(1) - nb / d2;   /* u > +1/2 */
-    /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2.  For g >= 0
-     * both terms are O(D^2), so its rounding stays below the bar's
-     * 4 eps xi du/dxi (tests/README.md). */
+    /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2 */
     return MIST__FN(mist__fma)(MIST__C(2) * x * (MIST__C(1) + g * g), ea,
                                -(omg * omg)) / d2;
 }
@@ -316,7 +319,8 @@ MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
 /* one real root (Cardano): u = A - 1/A,  A^3 = q/2 + sqrt(q^2/4 + 1).      */
 /* A - 1/A cancels near u = 0; with s = A^3 - 1 (computed without           */
 /* cancellation) it is  s (A + 1) / (A (A^2 + A + 1)),  all terms positive. */
-/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG.                       */
+/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG; evaluated in the      */
+/* wider type like HG (in T it reaches 1.7x the bar, measured).             */
 /* ======================================================================== */
 
 MIST__F MIST__T MIST__FN(mist__rayleigh_lower)(MIST__T xi)   /* xi in [0, 1/2], u <= 0 */
@@ -398,21 +402,29 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* 1e-5 in double, and by 0.82 at g = 0.01, alpha = 250 in float (measured, */
 /* ../shared/references/README.md): its terms cancel as 1/g^3.              */
 /*                                                                          */
-/* mist instead inverts a cancellation-free form of the same CDF by         */
-/* safeguarded Newton iteration.  With V1 = 1 + g, P = V V1, a = 1 + g^2,   */
-/* integrating [JD23 eq. 5] over [-1, u] and dividing out the factors g^3   */
-/* analytically (derivation in tests/README.md) gives                       */
-/*   H(u)  = int_{-1}^u HG = (1-g)(1+u) / (V (V1 + V))          =: K        */
-/*   M2(u) = int_{-1}^u u'^2 HG = K Q / (3 (P + a)),                        */
-/*   Q     = [ (1-u)(P+3a)(a(1-u) - 2gu) + u(3a-P)(P+a) ] / (P + a),        */
-/*   F(u)  = K (c0 + c1 Q / (3(P+a))) / (c0 + c1 m2).                       */
-/* F carries the factor (1 + u): it is accurate in RELATIVE terms in the    */
-/* lower tail.  We solve F(u) = xi for xi <= 1/2 and use the mirror image   */
-/* u(g, xi) = -u(-g, 1 - xi) above, so both tails are resolved to relative  */
-/* precision and 1 - xi is exact.  Newton's steps are kept inside a         */
-/* bracket [lo, hi] (bisection otherwise), so the iteration always          */
-/* converges; it stops when the step is below the bar's own scale           */
-/* eps (|u| + xi / f(u)).                                                   */
+/* mist inverts the same CDF, written without cancellation, by safeguarded  */
+/* Newton iteration.  Integrating [JD23 eq. 5] (substituting V for u) and   */
+/* dividing the factors g^3 out analytically, with V1 = 1 + g, a = 1 + g^2, */
+/* P = V V1, V0 = sqrt(a) = V(0):                                           */
+/*  u <= 0:  F(u) = K (c0 + c1 Qp / (3 (P+a)^2)) / cn,                      */
+/*           K  = (1-g)(1+u) / (V (V1 + V))          (the HG CDF),          */
+/*           Qp = (P + 3a)(V^2 + a u^2) - u V (V (V1^2 + 3a) - 2 g u V1);   */
+/*  u >= 0:  F(u) = F(0) + (c0 dH + c1 dM2) / cn,                           */
+/*           dH  = (1-g^2) u / (V V0 (V0 + V)),                             */
+/*           dM2 = (1-g^2) u^3 (2a + V0 (V0 + V)) / (3 V V0 (V0 + V)^3),    */
+/* where cn = c0 + c1 (1 + 2g^2)/3.  Every term is non-negative (for g < 0  */
+/* one difference in Qp loses at most a factor 1.5), so F keeps relative    */
+/* precision however small it is: the bar's 4 eps xi du/dxi is relative to  */
+/* xi, so the solver targets F(u) = xi for xi <= 1/2 and, above, the mirror */
+/* image F_{-g}(-u) = 1 - xi (exact for xi >= 1/2).  The bracket is [-1, 0] */
+/* or [0, 1] as xi <= F(0) or not; Newton steps that leave it bisect.       */
+/*                                                                          */
+/* F takes ~20 roundings, up to 10 eps in T (measured): more than the bar   */
+/* allows.  So the iteration in T stops at T's noise and finishes with      */
+/* Newton steps in the wider type (long double for double, double for       */
+/* float), which is correctly rounded in practice (0.25x the bar).  Where    */
+/* long double is no wider than double (MSVC, ARM Macs, CUDA device code)   */
+/* the double samplers skip that step: within 2x the bar (1.7x measured). */
 /* ======================================================================== */
 
 /* F(u) for u in [-1, 0], as a sum of non-negative terms for g >= 0 (for
@@ -469,18 +481,19 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
         r = up ? t + MIST__FN(mist__draine_hi)(g, c0, c1, cn, u, &f)
                : MIST__FN(mist__draine_lo)(g, c0, c1, cn, u, &f) - x;
         if (r > MIST__C(0)) hi = u; else if (r < MIST__C(0)) lo = u; else break;
-        un = f > MIST__C(0) ? u - r / f : lo - MIST__C(1);
-        if (un > lo && un < hi) {               /* a Newton step */
-            r = un - u;
-            u = un;
-            if ((r < MIST__C(0) ? -r : r)
-                <= MIST__C(16) * MIST__EPS * ((u < MIST__C(0) ? -u : u) + x / f))
+        if (f > MIST__C(0)) {                   /* a Newton step */
+            r /= f;
+            un = u - r;
+            if ((r < MIST__C(0) ? -r : r)       /* within T's noise: done */
+                <= MIST__C(16) * MIST__EPS * ((u < MIST__C(0) ? -u : u) + x / f)) {
+                if (un >= lo && un <= hi) u = un;
                 break;
-        } else {                                /* bisection */
-            un = MIST__C(0.5) * (lo + hi);
-            if (un == lo || un == hi) break;    /* bracket is 1 ulp */
-            u = un;
+            }
+            if (un > lo && un < hi) { u = un; continue; }
         }
+        un = MIST__C(0.5) * (lo + hi);          /* else bisection */
+        if (un == lo || un == hi) break;        /* bracket is 1 ulp */
+        u = un;
     }
 #ifdef MIST__W
     {   /* Finish with Newton steps in the wide type: F's ~20 roundings in T
@@ -588,10 +601,9 @@ MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 {
     MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
-    if (xi < w)
+    if (xi < w || w >= MIST__C(1))
         return MIST__FN(mist_draine_sample)(fog.g_d, fog.alpha, xi / w);
-    return MIST__FN(mist_hg_sample)(fog.g_hg,
-                                    w < MIST__C(1) ? (xi - w) / (MIST__C(1) - w) : MIST__C(0));
+    return MIST__FN(mist_hg_sample)(fog.g_hg, (xi - w) / (MIST__C(1) - w));
 }
 
 /* ======================================================================== */
@@ -610,7 +622,8 @@ MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
     MIST__T az = v.z < MIST__C(0) ? -v.z : v.z;
     MIST__T m = ax > ay ? ax : ay, il;
     m = m > az ? m : az;
-    if (!(m > MIST__C(0)) || !(m - m == MIST__C(0))) {       /* 0, NaN, inf */
+    if (!(m > MIST__C(0)) || !(v.x - v.x == MIST__C(0) && v.y - v.y == MIST__C(0)
+                               && v.z - v.z == MIST__C(0))) {  /* 0, NaN, inf */
         v.x = MIST__C(0); v.y = MIST__C(0); v.z = MIST__C(1);
         return v;
     }

@@ -1,0 +1,199 @@
+/* mist_bench.c - nanoseconds per call of mist's evaluation and sampling
+ * functions, beside baselines measured in the same run:
+ *   - the paper's formulas typed in as printed ([JD23] eq. 2-3 for HG, eq. 6
+ *     for Draine), which are what mist's stable forms replace;
+ * Each figure: median of 15 timed repetitions (after a warm-up) over a
+ * stream of 4096 random inputs, with the spread (min..max of the
+ * repetitions).  Run: ./build/mist_bench  (see README.md). */
+#define _POSIX_C_SOURCE 199309L
+#include "mist.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define N 4096
+#define REPS 15
+
+static float  xf[N], uf[N];
+static double xd[N], ud[N];
+static volatile double sink;
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/* ---- baselines: the formulas as printed --------------------------------- */
+
+/* [JD23] eq. 2 */
+static float hg_eval_printed(float g, float u)
+{
+    return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f);
+}
+
+/* [JD23] eq. 3, with the eq. 4 isotropic fallback */
+static float hg_sample_printed(float g, float xi)
+{
+    float t;
+    if (fabsf(g) < 1e-3f) return 2 * xi - 1;
+    t = (1 - g * g) / (1 - g + 2 * g * xi);
+    return (1 + g * g - t * t) / (2 * g);
+}
+
+/* [JD23] eq. 6, typed in as printed */
+#define EQ6(T, SQRT, CBRT)                                                     \
+    T t0 = alpha - alpha * g * g;                                              \
+    T t1 = alpha * g * g * g * g - alpha;                                      \
+    T t2 = -3 * (4 * (g * g * g * g - g * g) + t1 * (1 + g * g));              \
+    T t3 = g * (2 * xi - 1);                                                   \
+    T t4 = 3 * g * g * (1 + t3) + alpha * (2 + g * g * (1 + (1 + 2 * g * g) * t3)); \
+    T t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;                            \
+    T t6 = t0 * 4 * (g * g * g * g - g * g);                                   \
+    T t7 = CBRT(t5 + SQRT(t5 * t5 - t6 * t6 * t6));                            \
+    T t8 = 2 * (t1 + t6 / t7 + t7) / t0;                                       \
+    T t9 = SQRT(6 * (1 + g * g) + t8);                                         \
+    T w = SQRT(6 * (1 + g * g) - t8 + 8 * t4 / (t0 * t9)) - t9;                \
+    return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
+static float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrtf) }
+static double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
+
+/* ---- timing ------------------------------------------------------------- */
+
+typedef double (*bench_fn)(void);
+
+static double measure(bench_fn f, double *lo, double *hi)
+{
+    double t[REPS], tmp;
+    int i, j;
+    sink += f();                                   /* warm-up */
+    for (i = 0; i < REPS; ++i) {
+        double t0 = now();
+        sink += f();
+        t[i] = (now() - t0) / N * 1e9;
+    }
+    for (i = 0; i < REPS; ++i)
+        for (j = i + 1; j < REPS; ++j)
+            if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
+    *lo = t[0]; *hi = t[REPS - 1];
+    return t[REPS / 2];
+}
+
+#define LOOP(T, EXPR) { T s = 0; int i; for (i = 0; i < N; ++i) s += EXPR; return (double)s; }
+
+static double b_hg_eval_printed(void)  LOOP(float, hg_eval_printed(0.8f, uf[i]))
+static double b_hg_evalf(void)         LOOP(float, mist_hg_evalf(0.8f, uf[i]))
+static double b_hg_eval(void)          LOOP(double, mist_hg_eval(0.8, ud[i]))
+static double b_hg_sample_printed(void) LOOP(float, hg_sample_printed(0.8f, xf[i]))
+static double b_hg_samplef(void)       LOOP(float, mist_hg_samplef(0.8f, xf[i]))
+static double b_hg_sample(void)        LOOP(double, mist_hg_sample(0.8, xd[i]))
+static double b_draine_evalf(void)     LOOP(float, mist_draine_evalf(0.5f, 17.f, uf[i]))
+static double b_draine_eval(void)      LOOP(double, mist_draine_eval(0.5, 17., ud[i]))
+static double b_eq6f(void)             LOOP(float, draine_eq6f(0.5f, 17.f, xf[i]))
+static double b_eq6(void)              LOOP(double, draine_eq6(0.5, 17., xd[i]))
+static double b_draine_samplef(void)   LOOP(float, mist_draine_samplef(0.5f, 17.f, xf[i]))
+static double b_draine_sample(void)    LOOP(double, mist_draine_sample(0.5, 17., xd[i]))
+static double b_eq6f_250(void)         LOOP(float, draine_eq6f(0.1f, 250.f, xf[i]))
+static double b_draine_samplef_250(void) LOOP(float, mist_draine_samplef(0.1f, 250.f, xf[i]))
+static double b_cs_samplef(void)       LOOP(float, mist_cs_samplef(0.7f, xf[i]))
+static double b_rayleigh_samplef(void) LOOP(float, mist_rayleigh_samplef(xf[i]))
+static double b_rayleigh_sample(void)  LOOP(double, mist_rayleigh_sample(xd[i]))
+static double b_fog_samplef(void)
+{
+    mist_fogf fog = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+    LOOP(float, mist_fog_samplef(fog, xf[i]))
+}
+static double b_fog_evalf(void)
+{
+    mist_fogf fog = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+    LOOP(float, mist_fog_evalf(fog, uf[i]))
+}
+static double b_hg_sample_dirf(void)
+{
+    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
+    float pdf, s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        wo = mist_hg_sample_dirf(0.8f, wi, xf[i], xf[N - 1 - i], &pdf);
+        s += wo.x + pdf;
+    }
+    return s;
+}
+
+static void row(const char *name, bench_fn f, const char *base_name, double base)
+{
+    double lo, hi, m = measure(f, &lo, &hi);
+    if (base_name)
+        printf("%-34s %8.2f  [%6.2f..%6.2f]  %6.2fx %s\n", name, m, lo, hi, m / base, base_name);
+    else
+        printf("%-34s %8.2f  [%6.2f..%6.2f]\n", name, m, lo, hi);
+}
+
+static void machine(void)
+{
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    char line[256];
+    printf("machine: ");
+    if (f) {
+        while (fgets(line, sizeof line, f))
+            if (strncmp(line, "model name", 10) == 0) {
+                char *p = strchr(line, ':');
+                printf("%s", p ? p + 2 : line);
+                break;
+            }
+        fclose(f);
+    } else {
+        printf("unknown\n");
+    }
+#ifdef __VERSION__
+    printf("compiler: %s\n", __VERSION__);
+#endif
+}
+
+int main(void)
+{
+    double lo, hi, base;
+    int i;
+    unsigned long long s = 88172645463325252ULL;
+    for (i = 0; i < N; ++i) {
+        s ^= s << 13; s ^= s >> 7; s ^= s << 17;
+        xd[i] = (double)(s >> 11) * 0x1p-53;
+        ud[i] = 2 * xd[i] - 1;
+        xf[i] = (float)xd[i];
+        uf[i] = (float)ud[i];
+    }
+    machine();
+    printf("ns per call: median of %d repetitions of %d calls [min..max]; "
+           "ratio to the baseline named\n\n", REPS, N);
+
+    base = measure(b_hg_eval_printed, &lo, &hi);
+    row("eq. 2 HG eval as printed (float)", b_hg_eval_printed, NULL, 0);
+    row("mist_hg_evalf", b_hg_evalf, "eq. 2", base);
+    row("mist_hg_eval", b_hg_eval, "eq. 2", base);
+    base = measure(b_hg_sample_printed, &lo, &hi);
+    row("eq. 3 HG sample as printed (float)", b_hg_sample_printed, NULL, 0);
+    row("mist_hg_samplef", b_hg_samplef, "eq. 3", base);
+    row("mist_hg_sample", b_hg_sample, "eq. 3", base);
+    row("mist_hg_sample_dirf", b_hg_sample_dirf, "eq. 3", base);
+    printf("\n");
+    row("mist_draine_evalf (g .5, a 17)", b_draine_evalf, "eq. 2", measure(b_hg_eval_printed, &lo, &hi));
+    row("mist_draine_eval  (g .5, a 17)", b_draine_eval, NULL, 0);
+    base = measure(b_eq6f, &lo, &hi);
+    row("eq. 6 Draine as printed (float)", b_eq6f, NULL, 0);
+    row("eq. 6 Draine as printed (double)", b_eq6, "eq. 6 float", base);
+    row("mist_draine_samplef (g .5, a 17)", b_draine_samplef, "eq. 6 float", base);
+    row("mist_draine_sample  (g .5, a 17)", b_draine_sample, "eq. 6 float", base);
+    base = measure(b_eq6f_250, &lo, &hi);
+    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, 0);
+    row("mist_draine_samplef (g .1, a 250)", b_draine_samplef_250, "eq. 6 float", base);
+    row("mist_cs_samplef (g .7)", b_cs_samplef, "eq. 6 float", base);
+    printf("\n");
+    row("mist_rayleigh_samplef", b_rayleigh_samplef, NULL, 0);
+    row("mist_rayleigh_sample", b_rayleigh_sample, NULL, 0);
+    row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, 0);
+    row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, 0);
+    return 0;
+}

@@ -1,0 +1,241 @@
+/* test_domain.c - the documented domain and bad input of every function
+ * (the "DOMAIN AND BAD INPUT" block at the top of include/mist.h), in
+ * double and float:
+ *   g: NaN -> 0, |g| > 1 clamped, |g| = 1 the Dirac limit;
+ *   alpha: NaN and < 0 -> 0, +inf the exact limit;
+ *   u: clamped to [-1, 1], NaN -> density 0;
+ *   xi: clamped to [0, 1], NaN -> 0;
+ *   directions: normalised; zero, NaN, infinite -> (0, 0, 1);
+ *   fog: parameters sanitised.
+ * And: finite input never gives NaN (|g| < 1: always finite), over the
+ * edges of every domain (+-0, subnormals, one ulp inside and outside the
+ * bounds, huge values). */
+#include "mist.h"
+#include "mist_test.h"
+
+#include <float.h>
+
+static void test_g(void)
+{
+    static const double us[] = { -1, -0.3, 0, 0.7, 1 };
+    static const double xs[] = { 0, 0.2, 0.5, 0.9, 1 };
+    size_t i;
+    for (i = 0; i < 5; ++i) {
+        double u = us[i], x = xs[i];
+        float uf = (float)u, xf = (float)x;
+        /* NaN g is g = 0 */
+        mt_check(mist_hg_eval(NAN, u) == mist_hg_eval(0, u) &&
+                 mist_hg_evalf(NAN, uf) == mist_hg_evalf(0, uf), "hg_eval(NaN g) = g 0");
+        mt_check(mist_hg_sample(NAN, x) == mist_hg_sample(0, x) &&
+                 mist_hg_samplef(NAN, xf) == mist_hg_samplef(0, xf), "hg_sample(NaN g)");
+        mt_check(mist_draine_eval(NAN, 3, u) == mist_draine_eval(0, 3, u) &&
+                 mist_draine_sample(NAN, 3, x) == mist_draine_sample(0, 3, x) &&
+                 mist_draine_samplef(NAN, 3, xf) == mist_draine_samplef(0, 3, xf),
+                 "draine NaN g");
+        mt_check(mist_cs_eval(NAN, u) == mist_cs_eval(0, u) &&
+                 mist_cs_sample(NAN, x) == mist_cs_sample(0, x), "cs NaN g");
+        /* |g| > 1 is clamped to +-1 */
+        mt_check(mist_hg_eval(1.5, u) == mist_hg_eval(1, u) &&
+                 mist_hg_eval(-7, u) == mist_hg_eval(-1, u) &&
+                 mist_hg_evalf(INFINITY, uf) == mist_hg_evalf(1, uf), "hg_eval |g| > 1");
+        mt_check(mist_hg_sample(1.5, x) == 1 && mist_hg_sample(-INFINITY, x) == -1 &&
+                 mist_draine_sample(2, 5, x) == 1 && mist_draine_samplef(-2, 5, xf) == -1 &&
+                 mist_cs_samplef(3, xf) == 1, "sample |g| > 1");
+        /* |g| = 1: the Dirac limit, 0 off the peak, +inf on it */
+        mt_check(mist_hg_eval(1, u) == (u == 1 ? INFINITY : 0) &&
+                 mist_hg_eval(-1, u) == (u == -1 ? INFINITY : 0) &&
+                 mist_draine_evalf(1, 2, uf) == (uf == 1 ? INFINITY : 0) &&
+                 mist_cs_eval(-1, u) == (u == -1 ? INFINITY : 0),
+                 "|g| = 1 density at u=%g", u);
+    }
+}
+
+static void test_alpha(void)
+{
+    int k;
+    for (k = 0; k <= 10; ++k) {
+        double u = -1 + 0.2 * k, x = 0.1 * k;
+        float uf = (float)u, xf = (float)x;
+        mt_check(mist_draine_eval(0.4, -3, u) == mist_draine_eval(0.4, 0, u) &&
+                 mist_draine_eval(0.4, NAN, u) == mist_draine_eval(0.4, 0, u) &&
+                 mist_draine_evalf(0.4f, -INFINITY, uf) == mist_draine_evalf(0.4f, 0, uf),
+                 "alpha < 0 and NaN are alpha = 0 (eval, u=%g)", u);
+        mt_check(mist_draine_sample(0.4, -3, x) == mist_draine_sample(0.4, 0, x) &&
+                 mist_draine_sample(0.4, NAN, x) == mist_draine_sample(0.4, 0, x) &&
+                 mist_draine_samplef(0.4f, NAN, xf) == mist_draine_samplef(0.4f, 0, xf),
+                 "alpha < 0 and NaN are alpha = 0 (sample, xi=%g)", x);
+        /* alpha = 0 is exactly HG */
+        mt_check(mist_draine_sample(-0.6, 0, x) == mist_hg_sample(-0.6, x) &&
+                 mist_draine_eval(-0.6, 0, u) == mist_hg_eval(-0.6, u), "alpha 0 is HG");
+        /* alpha = +inf: the limit HG u^2 / E[u^2], finite, and the limit of
+         * large alpha (relative difference ~ 1/alpha: 1e-12 at alpha 1e15) */
+        {
+            double di = mist_draine_eval(0.4, INFINITY, u);
+            double dl = mist_draine_eval(0.4, 1e15, u);
+            double want = mist_hg_eval(0.4, u) * u * u / ((1 + 2 * 0.16) / 3);
+            mt_check(isfinite(di) && fabs(di - dl) <= 1e-12 * mist_hg_eval(0.4, u) &&
+                     fabs(di - want) <= 1e-14 * want,
+                     "alpha inf density at u=%g: %g vs %g", u, di, want);
+            mt_check(isfinite(mist_draine_sample(0.4, INFINITY, x)) &&
+                     fabs(mist_draine_sample(0.4, INFINITY, x) - mist_draine_sample(0.4, 1e15, x))
+                     <= 1e-9, "alpha inf sample at xi=%g", x);
+        }
+    }
+}
+
+static void test_u_xi(void)
+{
+    /* u outside [-1, 1] is clamped; NaN u has density 0 */
+    mt_check(mist_hg_eval(0.5, 1.0000001) == mist_hg_eval(0.5, 1) &&
+             mist_hg_eval(0.5, -5) == mist_hg_eval(0.5, -1) &&
+             mist_draine_eval(0.5, 2, INFINITY) == mist_draine_eval(0.5, 2, 1) &&
+             mist_rayleigh_eval(-3) == mist_rayleigh_eval(-1) &&
+             mist_hg_evalf(0.5f, 1.5f) == mist_hg_evalf(0.5f, 1), "u clamped");
+    mt_check(mist_hg_eval(0.5, NAN) == 0 && mist_draine_eval(0.5, 2, NAN) == 0 &&
+             mist_cs_evalf(0.5f, NAN) == 0 && mist_rayleigh_eval(NAN) == 0 &&
+             mist_rayleigh_evalf(NAN) == 0, "NaN u: density 0");
+    /* xi outside [0, 1] is clamped; NaN xi is 0 */
+    mt_check(mist_hg_sample(0.5, -0.1) == mist_hg_sample(0.5, 0) &&
+             mist_hg_sample(0.5, 1.5) == mist_hg_sample(0.5, 1) &&
+             mist_hg_sample(0.5, NAN) == mist_hg_sample(0.5, 0) &&
+             mist_draine_sample(0.5, 9, -INFINITY) == mist_draine_sample(0.5, 9, 0) &&
+             mist_draine_sample(0.5, 9, NAN) == mist_draine_sample(0.5, 9, 0) &&
+             mist_rayleigh_sample(2) == mist_rayleigh_sample(1) &&
+             mist_rayleigh_samplef(NAN) == mist_rayleigh_samplef(0) &&
+             mist_cs_samplef(0.5f, 7.f) == mist_cs_samplef(0.5f, 1), "xi clamped");
+    /* the ends of [0, 1] give the ends of [-1, 1] */
+    mt_check(mist_hg_sample(0.3, 0) == -1 && mist_hg_sample(0.3, 1) == 1 &&
+             mist_draine_sample(-0.3, 250, 0) == -1 && mist_draine_sample(-0.3, 250, 1) == 1 &&
+             mist_rayleigh_sample(0) == -1 && mist_rayleigh_sample(1) == 1 &&
+             mist_draine_samplef(0.9f, 17, 0) == -1 && mist_draine_samplef(0.9f, 17, 1) == 1,
+             "xi = 0 and 1 give u = -1 and 1");
+}
+
+static double len3(mist_vec3 v) { return sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+
+static void test_directions(void)
+{
+    mist_vec3 z = { 0, 0, 1 }, bad[6], v, w;
+    mist_vec3f zf = { 0, 0, 1 }, vf, wf;
+    double pdf1, pdf2;
+    float pf1, pf2;
+    int i;
+    bad[0].x = 0; bad[0].y = 0; bad[0].z = 0;
+    bad[1].x = NAN; bad[1].y = 0; bad[1].z = 1;
+    bad[2].x = INFINITY; bad[2].y = 0; bad[2].z = 0;
+    bad[3].x = -0.0; bad[3].y = 0; bad[3].z = -0.0;
+    bad[4].x = 1; bad[4].y = NAN; bad[4].z = NAN;
+    bad[5].x = -INFINITY; bad[5].y = INFINITY; bad[5].z = 1;
+    for (i = 0; i < 6; ++i) {
+        v = mist_hg_sample_dir(0.7, bad[i], 0.3, 0.6, &pdf1);
+        w = mist_hg_sample_dir(0.7, z, 0.3, 0.6, &pdf2);
+        mt_check(v.x == w.x && v.y == w.y && v.z == w.z && pdf1 == pdf2,
+                 "bad direction %d is (0, 0, 1)", i);
+        vf.x = (float)bad[i].x; vf.y = (float)bad[i].y; vf.z = (float)bad[i].z;
+        vf = mist_draine_sample_dirf(0.7f, 3, vf, 0.3f, 0.6f, &pf1);
+        wf = mist_draine_sample_dirf(0.7f, 3, zf, 0.3f, 0.6f, &pf2);
+        mt_check(vf.x == wf.x && vf.y == wf.y && vf.z == wf.z && pf1 == pf2,
+                 "bad float direction %d is (0, 0, 1)", i);
+    }
+    /* non-unit directions are normalised: tiny, huge and subnormal lengths
+     * give the direction of the unit vector, to 8 eps (scaling by the
+     * largest component, one sqrt, three products) */
+    {
+        static const double scales[] = { 1e-300, 1e-30, 3, 1e30, 1e300 };
+        mist_vec3 u = { 0.48, -0.6, 0.64 }, s, a, b;
+        size_t k;
+        a = mist_rayleigh_sample_dir(u, 0.8, 0.1, &pdf1);
+        for (k = 0; k < sizeof scales / sizeof *scales; ++k) {
+            s.x = u.x * scales[k]; s.y = u.y * scales[k]; s.z = u.z * scales[k];
+            b = mist_rayleigh_sample_dir(s, 0.8, 0.1, &pdf2);
+            mt_check(fabs(a.x - b.x) + fabs(a.y - b.y) + fabs(a.z - b.z) <= 8 * DBL_EPSILON &&
+                     fabs(len3(b) - 1) <= 4 * DBL_EPSILON,
+                     "direction scaled by %g is normalised", scales[k]);
+        }
+    }
+    /* subnormal components carry fewer bits, but still give a unit vector */
+    {
+        mist_vec3 s = { 4.9406564584124654e-324, -1e-310, 3e-311 };
+        v = mist_hg_sample_dir(0.3, s, 0.4, 0.2, &pdf1);
+        mt_check(fabs(len3(v) - 1) <= 4 * DBL_EPSILON && fabs(len3(mist_normalize(s)) - 1)
+                 <= 4 * DBL_EPSILON, "subnormal direction gives a unit vector");
+    }
+    /* pdf may be NULL */
+    v = mist_cs_sample_dir(0.2, z, 0.5, 0.5, NULL);
+    mt_check(fabs(len3(v) - 1) < 4 * DBL_EPSILON, "NULL pdf accepted");
+    /* |g| = 1: the direction is exactly +-wi and the pdf is +inf */
+    v = mist_hg_sample_dir(1, z, 0.3, 0.9, &pdf1);
+    w = mist_hg_sample_dir(-1, z, 0.3, 0.9, &pdf2);
+    mt_check(v.z == 1 && fabs(v.x) + fabs(v.y) == 0 && w.z == -1 && pdf1 == INFINITY &&
+             pdf2 == INFINITY, "|g| = 1 direction is +-wi with pdf +inf");
+}
+
+static void test_fog(void)
+{
+    mist_fog f = mist_fog_make(NAN, 3, -2, 1.5), h;
+    mist_fogf ff = mist_fog_makef(0.5f, -0.5f, NAN, NAN);
+    mt_check(f.g_hg == 0 && f.g_d == 1 && f.alpha == 0 && f.w_d == 1, "fog_make sanitises");
+    mt_check(ff.g_hg == 0.5f && ff.g_d == -0.5f && ff.alpha == 0 && ff.w_d == 0,
+             "fog_makef sanitises NaN alpha and w_d");
+    /* a hand-filled struct with bad values is safe: w_d is clamped */
+    h.g_hg = 0.5; h.g_d = 0.2; h.alpha = 3; h.w_d = NAN;
+    mt_check(mist_fog_eval(h, 0.3) == mist_hg_eval(0.5, 0.3) &&
+             mist_fog_sample(h, 0.3) == mist_hg_sample(0.5, 0.3), "fog w_d NaN is 0");
+    h.w_d = 2;
+    mt_check(mist_fog_eval(h, 0.3) == mist_draine_eval(0.2, 3, 0.3) &&
+             mist_fog_sample(h, 0.3) == mist_draine_sample(0.2, 3, 0.3), "fog w_d > 1 is 1");
+    /* xi = 1 with w_d = 1: the Draine lobe's upper end */
+    mt_check(mist_fog_sample(h, 1) == 1, "fog xi 1");
+}
+
+/* Finite input never yields NaN; for |g| < 1 everything is finite; samples
+ * lie in [-1, 1] and directions are unit. */
+static void test_sweep(void)
+{
+    static const double gs[] = { 0, -0.0, 4.9406564584124654e-324, -DBL_MIN, 1e-300, 1e-8, 0.5,
+                                 0.999999, 1 - DBL_EPSILON / 2, -(1 - DBL_EPSILON / 2),
+                                 1, -1, 1 + DBL_EPSILON, -1e300 };
+    static const double as[] = { 0, -0.0, 4.9406564584124654e-324, 1e-300, 1e-8, 1, 1e8, 1e300,
+                                 DBL_MAX, INFINITY, -1 };
+    static const double xs[] = { 0, -0.0, 4.9406564584124654e-324, 1e-300, 1e-16, 0.5, 1 - DBL_EPSILON / 2,
+                                 1, 1 + DBL_EPSILON, -DBL_MIN, DBL_MAX };
+    size_t i, j, k;
+    int bad = 0, badf = 0;
+    for (i = 0; i < sizeof gs / sizeof *gs; ++i)
+        for (j = 0; j < sizeof as / sizeof *as; ++j)
+            for (k = 0; k < sizeof xs / sizeof *xs; ++k) {
+                double g = gs[i], a = as[j], x = xs[k], pdf;
+                float gf = (float)g, af = (float)a, xf = (float)x, pf;
+                int interior = fabs(g) < 1, interiorf = fabsf(gf) < 1;
+                double u = mist_draine_sample(g, a, x);
+                double p = mist_draine_eval(g, a, 2 * x - 1);
+                float uf = mist_draine_samplef(gf, af, xf);
+                float pff = mist_draine_evalf(gf, af, 2 * xf - 1);
+                mist_vec3 wi = { 0.1, -0.2, 0.97 }, wo;
+                mist_vec3f wif = { 0.1f, -0.2f, 0.97f }, wof;
+                wo = mist_draine_sample_dir(g, a, wi, x, 1 - x, &pdf);
+                wof = mist_draine_sample_dirf(gf, af, wif, xf, 1 - xf, &pf);
+                bad += !(u >= -1 && u <= 1) || p != p || p < 0 || pdf != pdf ||
+                       (interior && (!isfinite(p) || !isfinite(pdf))) ||
+                       !(fabs(len3(wo) - 1) <= 4 * DBL_EPSILON);
+                badf += !(uf >= -1 && uf <= 1) || pff != pff || pff < 0 || pf != pf ||
+                        (interiorf && (!isfinite(pff) || !isfinite(pf))) ||
+                        !(fabsf(sqrtf(wof.x * wof.x + wof.y * wof.y + wof.z * wof.z) - 1)
+                          <= 4 * FLT_EPSILON);
+                bad += mist_hg_sample(g, x) != mist_hg_sample(g, x);   /* NaN */
+                badf += mist_hg_samplef(gf, xf) != mist_hg_samplef(gf, xf);
+            }
+    mt_check(bad == 0, "double sweep over domain edges: %d bad results", bad);
+    mt_check(badf == 0, "float sweep over domain edges: %d bad results", badf);
+}
+
+int main(void)
+{
+    test_g();
+    test_alpha();
+    test_u_xi();
+    test_directions();
+    test_fog();
+    test_sweep();
+    return mt_done("test_domain");
+}
