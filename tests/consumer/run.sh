@@ -1,0 +1,31 @@
+#!/bin/sh
+# run.sh SOURCE WORK: install mist into WORK/prefix, then build and run the
+# consumer (tests/consumer) against it with find_package, with pkg-config
+# (skipped with a message if pkg-config is absent), and with add_subdirectory.
+set -e
+src=$1; work=$2
+rm -rf "$work"; mkdir -p "$work"
+cmake -S "$src" -B "$work/mist" -DMIST_BUILD_TESTS=OFF -DMIST_BUILD_EXAMPLES=OFF \
+      -DCMAKE_INSTALL_PREFIX="$work/prefix" >/dev/null
+cmake --install "$work/mist" >/dev/null
+echo "installed:"; (cd "$work/prefix" && find . -type f | sort)
+
+cmake -S "$src/tests/consumer" -B "$work/pkg" -DMODE=package \
+      -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/pkg" >/dev/null
+"$work/pkg/consumer"
+
+cmake -S "$src/tests/consumer" -B "$work/sub" -DMODE=subdir -DMIST_SOURCE="$src" >/dev/null
+cmake --build "$work/sub" >/dev/null
+"$work/sub/consumer"
+
+if command -v pkg-config >/dev/null 2>&1; then
+    PKG_CONFIG_PATH="$work/prefix/share/pkgconfig" pkg-config --cflags --libs mist
+    cc -std=c99 -Wall -Wextra -Wpedantic -Werror $(PKG_CONFIG_PATH="$work/prefix/share/pkgconfig" \
+       pkg-config --cflags mist) "$src/tests/consumer/main.c" -o "$work/pc" \
+       $(PKG_CONFIG_PATH="$work/prefix/share/pkgconfig" pkg-config --libs mist)
+    "$work/pc"
+else
+    echo "pkg-config not found: its part skipped"
+fi
+echo "consumer: 3 builds passed"
