@@ -107,10 +107,61 @@ typedef struct mist_vec3f { float  x, y, z; } mist_vec3f;
 typedef struct mist_fog  { double g_hg, g_d, alpha, w_d; } mist_fog;
 typedef struct mist_fogf { float  g_hg, g_d, alpha, w_d; } mist_fogf;
 
+/* A linear RGB triple: radiance, or a coefficient per colour band. */
+typedef struct mist_rgb  { double r, g, b; } mist_rgb;
+typedef struct mist_rgbf { float  r, g, b; } mist_rgbf;
+
+/* The analytic height fog [I18]: see "Analytic height fog" below.  The
+ * extinction and scattering coefficient of each component at height y is
+ * its coefficient here times density * exp(-(y - base) / scale_height);
+ * height is the y coordinate. */
+typedef struct mist_hfog {
+    double    base;           /* reference height */
+    double    density;        /* density at the base (>= 0) */
+    double    scale_height;   /* H > 0 (+inf: uniform fog) */
+    mist_rgb  rayleigh_scat;  /* Rayleigh scattering, per unit length */
+    mist_rgb  rayleigh_ext;   /* Rayleigh extinction (raised to >= scat) */
+    mist_rgb  mie_scat;       /* Mie scattering */
+    mist_rgb  mie_ext;        /* Mie extinction (raised to >= scat) */
+    mist_fog  mie_phase;      /* Mie phase function (mist_fog_make) */
+    mist_vec3 sun_dir;        /* towards the sun */
+    mist_rgb  sun;            /* sun irradiance (radiance x solid angle) */
+    mist_rgb  ambient;        /* isotropic ambient radiance */
+    int       sun_extinction; /* nonzero: the fog dims the sun too */
+} mist_hfog;
+typedef struct mist_hfogf {
+    float      base, density, scale_height;
+    mist_rgbf  rayleigh_scat, rayleigh_ext, mie_scat, mie_ext;
+    mist_fogf  mie_phase;
+    mist_vec3f sun_dir;
+    mist_rgbf  sun, ambient;
+    int        sun_extinction;
+} mist_hfogf;
+
 /* 1/(4 pi), 3/(16 pi), 2 pi */
 #define MIST__INV4PI  0.0795774715459476678844418816862571810
 #define MIST__3_16PI  0.0596831036594607509133314112646928858
 #define MIST__2PI     6.28318530717958647692528676655900577
+
+/* [JD23 eq. 6] as printed, in double: only a starting point for the exact
+ * Draine sampler (it cancels as 1/g^3 and is NaN at g = 0 or alpha = 0;
+ * see "Draine and Cornette-Shanks: exact sampling"). */
+MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
+{
+    double g2 = g * g, g4 = g2 * g2;
+    double t0 = alpha - alpha * g2;
+    double t1 = alpha * g4 - alpha;
+    double t2 = -3 * (4 * (g4 - g2) + t1 * (1 + g2));
+    double t3 = g * (2 * xi - 1);
+    double t4 = 3 * g2 * (1 + t3) + alpha * (2 + g2 * (1 + (1 + 2 * g2) * t3));
+    double t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;
+    double t6 = t0 * 4 * (g4 - g2);
+    double t7 = cbrt(t5 + sqrt(t5 * t5 - t6 * t6 * t6));
+    double t8 = 2 * (t1 + t6 / t7 + t7) / t0;
+    double t9 = sqrt(6 * (1 + g2) + t8);
+    double w = sqrt(6 * (1 + g2) - t8 + 8 * t4 / (t0 * t9)) - t9;
+    return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
+}
 
 /* ------------------------------------------------------------------------ */
 /* The passes: the body below is compiled once per type.                    */
@@ -423,6 +474,10 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* allows.  So the iteration in T stops at T's noise and finishes with      */
 /* Newton steps in the wider type (long double for double, double for       */
 /* float), which is correctly rounded in practice (0.25x the bar).  Where    */
+/* eq. 6 itself is good in double (1e-3 <= |g| <= 0.9999, 1e-6 <= alpha <=  */
+/* 1e4: within 1.3e-5, measured) it is only the starting point: one wide    */
+/* Newton step then lands (checked by the step's predicted successor), and  */
+/* the iteration in T is skipped.  Where                                    */
 /* long double is no wider than double (MSVC, ARM Macs, CUDA device code)   */
 /* the double samplers skip that step: within 2x the bar (1.7x measured). */
 /* ======================================================================== */
@@ -436,12 +491,13 @@ MIST__F MIST__T MIST__FN(mist__draine_lo)(MIST__T g, MIST__T c0, MIST__T c1,
     MIST__T v2 = MIST__FN(mist__v2)(g, u);
     MIST__T v  = MIST__M(sqrt)(v2);
     MIST__T v1 = MIST__C(1) + g, a = MIST__C(1) + g * g;
-    MIST__T k  = (MIST__C(1) - g) * (MIST__C(1) + u) / (v * (v1 + v));
-    MIST__T p  = v * v1, pa = p + a;
+    MIST__T p  = v * v1, pa = p + a, s = v1 + v, d = MIST__C(3) * pa * pa;
     MIST__T qp = (p + MIST__C(3) * a) * (v2 + a * u * u)
                - u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * g * u * v1);
-    *f = MIST__C(0.5) * (MIST__C(1) - g) * v1 / (v2 * v) * ((c0 + c1 * u * u) / cn);
-    return k * (c0 + c1 * qp / (MIST__C(3) * pa * pa)) / cn;
+    /* one division serves F and f */
+    MIST__T inv = MIST__C(1) / (v * cn * s * d * v2);
+    *f = MIST__C(0.5) * (MIST__C(1) - g) * v1 * (c0 + c1 * u * u) * (s * d) * inv;
+    return (MIST__C(1) - g) * (MIST__C(1) + u) * (c0 * d + c1 * qp) * v2 * inv;
 }
 
 /* F(u) - F(0) for u in [0, 1], a sum of non-negative terms (V0^2 = a):
@@ -455,27 +511,88 @@ MIST__F MIST__T MIST__FN(mist__draine_hi)(MIST__T g, MIST__T c0, MIST__T c1,
     MIST__T v  = MIST__M(sqrt)(v2);
     MIST__T a  = MIST__C(1) + g * g, v0 = MIST__M(sqrt)(a), s = v0 + v;
     MIST__T omg2 = (MIST__C(1) - g) * (MIST__C(1) + g);
-    MIST__T dh = omg2 * u / (v * v0 * s);
-    *f = MIST__C(0.5) * omg2 / (v2 * v) * ((c0 + c1 * u * u) / cn);
-    return dh * (c0 + c1 * u * u * (MIST__C(2) * a + v0 * s)
-                      / (MIST__C(3) * s * s)) / cn;
+    MIST__T d  = MIST__C(3) * s * s * s * v0;
+    MIST__T inv = MIST__C(1) / (v * cn * v2 * d);   /* one division */
+    *f = MIST__C(0.5) * omg2 * (c0 + c1 * u * u) * d * inv;
+    return omg2 * u * (MIST__C(3) * s * s * c0 + c1 * u * u * (MIST__C(2) * a + v0 * s))
+           * v2 * inv;
 }
 
 #ifndef MIST__INTERNAL_ONLY
-/* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1).
- * Safeguarded Newton inside [-1, 0] or [0, 1] as x <= F(0) or not. */
+#ifdef MIST__W
+/* Newton steps in the wide type from *u, at most n: F's ~20 roundings in T
+ * (up to 10 eps, measured) would exceed the bar, and near the peak of
+ * |g| -> 1 a single step from T's answer still leaves half an ulp of
+ * curvature error (measured at g = 0.999 in float), so iterate until the
+ * step is far below T's ulp.  F is the u <= 0 or u >= 0 form by the sign of
+ * the iterate (both are accurate near 0).  Returns 1 when converged. */
+MIST__F int MIST__FN(mist__draine_polish)(MIST__T g, MIST__T alpha, MIST__T x,
+                                          int n, MIST__T *u)
+{
+    MIST__W gw = g, uw = *u, c0w, c1w, cnw, fw, rw, sw, kw, tol, tw = 0;
+    int it, have0 = 0;
+    MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
+    cnw = c0w + c1w * (1 + 2 * gw * gw) / 3;
+    for (it = 0; it < n; ++it) {
+        if (uw > 0) {
+            if (!have0) {
+                tw = MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, 0, &fw) - x;
+                have0 = 1;
+            }
+            rw = tw + MIST__WFN(mist__draine_hi)(gw, c0w, c1w, cnw, uw, &fw);
+        } else {
+            rw = MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, uw, &fw) - x;
+        }
+        if (!(fw > 0)) return 0;
+        sw = rw / fw;
+        /* Newton's next step is ~ |f'/(2f)| s^2, with f'/f = 3g/V^2 +
+         * 2 c1 u/(c0 + c1 u^2): converged when 4x that is below tol, so a
+         * good start costs one evaluation */
+        kw = 3 * gw / MIST__WFN(mist__v2)(gw, uw)
+           + 2 * c1w * uw / (c0w + c1w * uw * uw);
+        uw -= sw;
+        uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);
+        sw = sw < 0 ? -sw : sw;
+        kw = kw < 0 ? -kw : kw;
+        tol = MIST__EPS / 64 * ((uw < 0 ? -uw : uw) + x / fw);
+        if (sw <= tol || 2 * kw * sw * sw <= tol) {
+            *u = (MIST__T)uw;
+            return 1;
+        }
+    }
+    *u = (MIST__T)uw;
+    return 0;
+}
+#endif
+
+/* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1). */
 MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
                                              MIST__T c0, MIST__T c1, MIST__T x)
 {
-    MIST__T cn = c0 + c1 * (MIST__C(1) + MIST__C(2) * g * g) / MIST__C(3);
-    MIST__T f, r, un, lo, hi, t, u;
-    MIST__T f0 = MIST__FN(mist__draine_lo)(g, c0, c1, cn, MIST__C(0), &f);
-    int up = x > f0, it;
+    MIST__T cn, f, r, un, lo, hi, t, u, f0;
+    int up, it;
     if (!(x > MIST__C(0))) return MIST__C(-1);
+#ifdef MIST__W
+    /* Fast path: [JD23 eq. 6] in double lands within 1.3e-5 of the answer
+     * for 1e-3 <= |g| <= 0.9999 and 1e-6 <= alpha <= 1e4 (measured), close
+     * enough for the wide Newton steps to converge in 2-3. */
+    if ((g >= MIST__C(1e-3) || g <= MIST__C(-1e-3)) && g <= MIST__C(0.9999)
+        && g >= MIST__C(-0.9999) && alpha >= MIST__C(1e-6) && alpha <= MIST__C(1e4)) {
+        u = (MIST__T)mist__draine_eq6((double)g, (double)alpha, (double)x);
+        if (u > MIST__C(-1) && u < MIST__C(1)
+            && MIST__FN(mist__draine_polish)(g, alpha, x, 6, &u))
+            return u;
+    }
+#endif
+    /* Safeguarded Newton in T inside [-1, 0] or [0, 1] as x <= F(0) or not,
+     * from the alpha = 0 answer, then the wide steps. */
+    cn = c0 + c1 * (MIST__C(1) + MIST__C(2) * g * g) / MIST__C(3);
+    f0 = MIST__FN(mist__draine_lo)(g, c0, c1, cn, MIST__C(0), &f);
+    up = x > f0;
     lo = up ? MIST__C(0) : MIST__C(-1);
     hi = up ? MIST__C(1) : MIST__C(0);
     t  = up ? f0 - x : -x;                      /* F - x = t + (F - F(lo)) */
-    u = MIST__FN(mist__hg_sample)(g, x);        /* the alpha = 0 answer */
+    u = MIST__FN(mist__hg_sample)(g, x);
     if (!(u > lo && u < hi)) u = MIST__C(0.5) * (lo + hi);
     for (it = 0; it < MIST__MAXIT; ++it) {
         r = up ? t + MIST__FN(mist__draine_hi)(g, c0, c1, cn, u, &f)
@@ -496,30 +613,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
         u = un;
     }
 #ifdef MIST__W
-    {   /* Finish with Newton steps in the wide type: F's ~20 roundings in T
-         * (up to 10 eps, measured) would exceed the bar, and near the peak of
-         * |g| -> 1 one step from T's answer still leaves half an ulp of
-         * curvature error (measured at g = 0.999 in float), so iterate until
-         * the step is far below T's ulp (at most 4 steps; 1-2 in practice). */
-        MIST__W gw = g, uw = u, c0w, c1w, cnw, fw, rw, tw = 0, sw;
-        MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
-        cnw = c0w + c1w * (1 + 2 * gw * gw) / 3;
-        if (up) tw = MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, 0, &fw) - x;
-        lo = up ? MIST__C(0) : MIST__C(-1);
-        hi = up ? MIST__C(1) : MIST__C(0);
-        for (it = 0; it < 4; ++it) {
-            rw = up ? tw + MIST__WFN(mist__draine_hi)(gw, c0w, c1w, cnw, uw, &fw)
-                    : MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, uw, &fw) - x;
-            if (!(fw > 0)) break;
-            sw = rw / fw;
-            uw -= sw;                           /* stay on this side */
-            uw = uw < lo ? lo : (uw > hi ? hi : uw);
-            if ((sw < 0 ? -sw : sw)
-                <= MIST__EPS / 64 * ((uw < 0 ? -uw : uw) + x / fw))
-                break;
-        }
-        u = (MIST__T)uw;
-    }
+    MIST__FN(mist__draine_polish)(g, alpha, x, 4, &u);
 #else
     (void)alpha;
 #endif
@@ -752,6 +846,285 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
     if (pdf) *pdf = MIST__FN(mist_fog_eval)(fog, u);
     return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
 }
+
+/* ======================================================================== */
+/* Analytic height fog [I18]                                                */
+/*                                                                          */
+/* PLACEHOLDER                                                              */
+/* ======================================================================== */
+
+#define MIST__RGB   MIST__FN(mist_rgb)
+#define MIST__HFOG  MIST__FN(mist_hfog)
+#define MIST__HRAY  MIST__FN(mist__hray)
+/* the largest finite T, and a bound on |x| with exp(+-x) normal */
+#define MIST__BIG   ((MIST__T)(MIST__EPS < 1e-10 ? DBL_MAX : FLT_MAX))
+#define MIST__XLIM  MIST__C(MIST__EPS < 1e-10 ? 700 : 85)
+
+/* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
+MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
+{
+    return x > MIST__C(0) ? (x < MIST__BIG ? x : MIST__BIG) : MIST__C(0);
+}
+
+MIST__F int MIST__FN(mist__finite)(MIST__T x) { return x - x == MIST__C(0); }
+
+/* s + *e = a + b exactly (Knuth's TwoSum). */
+MIST__F MIST__T MIST__FN(mist__two_sum)(MIST__T a, MIST__T b, MIST__T *e)
+{
+    MIST__T s = a + b, bb = s - a;
+    *e = (a - (s - bb)) + (b - bb);
+    return s;
+}
+
+/* p + *e = a * b exactly: one fma where the hardware has it, else Dekker's
+ * product (exact also if a compiler fuses its products: they are exact). */
+MIST__F MIST__T MIST__FN(mist__two_prod)(MIST__T a, MIST__T b, MIST__T *e)
+{
+    MIST__T p = a * b;
+#if defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)
+    *e = MIST__M(fma)(a, b, -p);
+#else
+    /* Veltkamp split: 2^27 + 1 (double), 2^12 + 1 (float) */
+    const MIST__T k = (MIST__T)(MIST__EPS < 1e-10 ? 134217729.0 : 4097.0);
+    MIST__T c = k * a, ah = c - (c - a), al = a - ah;
+    MIST__T d = k * b, bh = d - (d - b), bl = b - bh;
+    *e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+#endif
+    return p;
+}
+
+/* (n + ne) / H as hi + *lo (|lo| <= ~ulp(hi)): the remainder of the
+ * rounded quotient is exact. */
+MIST__F MIST__T MIST__FN(mist__ddiv)(MIST__T n, MIST__T ne, MIST__T H, MIST__T *lo)
+{
+    MIST__T q = n / H, pe, p = MIST__FN(mist__two_prod)(q, H, &pe);
+    *lo = (((n - p) - pe) + ne) / H;
+    return q;
+}
+
+/* phi1(z) = (1 - e^-z) / z, phi1(0) = 1, phi1(+inf) = 0, with no
+ * cancellation (expm1). */
+MIST__F MIST__T MIST__FN(mist__phi1)(MIST__T z)
+{
+    return z == MIST__C(0) ? MIST__C(1) : -MIST__M(expm1)(-z) / z;
+}
+
+/* c * exp(-(xh + xl)) for c >= 0 and |xl| << 1 (a non-finite xl counts as
+ * 0).  The exponential is taken in two halves when one alone would leave
+ * the normal range, so the product is right whenever it is representable. */
+MIST__F MIST__T MIST__FN(mist__expmul)(MIST__T c, MIST__T xh, MIST__T xl)
+{
+    MIST__T e;
+    if (c == MIST__C(0)) return MIST__C(0);
+    if (!MIST__FN(mist__finite)(xl)) xl = MIST__C(0);
+    if (xh > -MIST__XLIM && xh < MIST__XLIM)
+        return c * MIST__M(exp)(-xh) * (MIST__C(1) - xl);
+    e = MIST__M(exp)(MIST__C(-0.5) * xh);
+    return c * e * (MIST__C(1) - xl) * e;
+}
+
+/* One exponential layer, density d0 exp(-(y - yb) / H), along the ray
+ * y(t) = y + w t, t in [t0, t0 + s]: col = the integral of the density,
+ * rho0 and rho1 = the density at the two ends. */
+typedef struct MIST__HRAY { MIST__T col, rho0, rho1; } MIST__HRAY;
+
+/* Requires d0 > 0 finite, H > 0 (+inf: uniform), y, yb, t0 finite,
+ * w in [-1, 1], s >= 0 (+inf allowed).  The exponents are carried as
+ * double-T (hi + lo) and combined before exp is taken; the lower end of the
+ * segment is the reference, so the column is  d0 e^(-h_low) s phi1(|a|)
+ * with a = w s / H and phi1 <= 1: nothing overflows unless the result does. */
+MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, MIST__T s,
+                                             MIST__T yb, MIST__T H, MIST__T d0)
+{
+    MIST__HRAY r;
+    MIST__T hh = 0, hl = 0, ah = 0, al = 0, xh, xl, e, za, leff, n, ne, p, pe;
+    if (H < MIST__BIG) {                        /* else uniform: h = a = 0 */
+        n = MIST__FN(mist__two_sum)(y, -yb, &ne);
+        if (t0 != MIST__C(0)) {                 /* y - yb + w t0 */
+            MIST__T d = n, de = ne;
+            p = MIST__FN(mist__two_prod)(w, t0, &pe);
+            n = MIST__FN(mist__two_sum)(d, p, &ne);
+            ne += de + pe;
+        }
+        hh = MIST__FN(mist__ddiv)(n, ne, H, &hl);
+        if (s < MIST__BIG) {
+            p = MIST__FN(mist__two_prod)(w, s, &pe);
+            ah = MIST__FN(mist__ddiv)(p, pe, H, &al);
+        }
+    }
+    r.rho0 = MIST__FN(mist__expmul)(d0, hh, hl);
+    if (!(s < MIST__BIG)) {                     /* s = +inf */
+        if (w > MIST__C(0) && H < MIST__BIG) {  /* the column above: H / w */
+            r.col  = MIST__FN(mist__expmul)(d0 * (H / w), hh, hl);
+            r.rho1 = MIST__C(0);
+        } else {                                /* down, level or uniform */
+            r.col  = (MIST__T)INFINITY;
+            r.rho1 = (w < MIST__C(0) && H < MIST__BIG) ? (MIST__T)INFINITY : r.rho0;
+        }
+        return r;
+    }
+    za = ah < MIST__C(0) ? -ah : ah;
+    leff = za < MIST__C(1) ? s * MIST__FN(mist__phi1)(za)
+                           : H / (w < MIST__C(0) ? -w : w) * -MIST__M(expm1)(-za);
+    xh = MIST__FN(mist__two_sum)(hh, ah, &e);   /* the far end: h + a */
+    xl = e + hl + al;
+    r.rho1 = MIST__FN(mist__expmul)(d0, xh, xl);
+    if (!(ah < MIST__C(0))) { xh = hh; xl = hl; }   /* the lower end */
+    r.col = MIST__FN(mist__expmul)(d0 * leff, xh, xl);
+    return r;
+}
+
+/* A direction used as given when it is unit to rounding (so the vertical
+ * cosine is exactly dir.y), else normalised (zero, NaN, inf: (0, 0, 1)). */
+MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
+{
+    MIST__T d = v.x * v.x + v.y * v.y + v.z * v.z - MIST__C(1);
+    if (d <= MIST__C(16) * MIST__EPS && d >= MIST__C(-16) * MIST__EPS) return v;
+    return MIST__FN(mist_normalize)(v);
+}
+
+/* The integral of the density factor  density exp(-(y(t) - base)/H)  along
+ * the ray y(t) = y + w t, 0 <= t <= length: the optical depth of a
+ * component is its extinction coefficient times this.  w is the vertical
+ * component of the unit direction, length may be +inf.  Bad input (see the
+ * section comment) gives 0. */
+MIST__F MIST__T MIST__FN(mist_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIST__T w,
+                                           MIST__T length)
+{
+    MIST__T d0 = MIST__FN(mist__pos)(fog->density), H = fog->scale_height;
+    if (!(d0 > MIST__C(0) && H > MIST__C(0) && length > MIST__C(0) && w == w
+          && MIST__FN(mist__finite)(fog->base) && MIST__FN(mist__finite)(y)))
+        return MIST__C(0);
+    w = w < MIST__C(-1) ? MIST__C(-1) : (w > MIST__C(1) ? MIST__C(1) : w);
+    return MIST__FN(mist__hray_eval)(y, w, MIST__C(0), length, fog->base, H, d0).col;
+}
+
+/* Transmittance and in-scattered radiance of the ray from `origin` along
+ * `dir` over `length` (+inf allowed): the background seen through the fog
+ * becomes  background * transmittance + inscatter.  Either pointer may be
+ * NULL.  See the section comment for the model, the domain and bad input. */
+MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                      MIST__T length, MIST__RGB *transmittance,
+                                      MIST__RGB *inscatter)
+{
+    MIST__T tr[3], ls[3], st[3], sR[3], sM[3], E[3], La[3], ex[3];
+    MIST__T d0 = MIST__FN(mist__pos)(fog->density), H = fog->scale_height, w = 0;
+    MIST__T pR = 0, pM = 0, ly = 0, nu = 0, anu = 0;
+    MIST__HRAY ray;
+    int c, fogged;
+    for (c = 0; c < 3; ++c) { tr[c] = MIST__C(1); ls[c] = MIST__C(0); }
+    fogged = d0 > MIST__C(0) && H > MIST__C(0) && length > MIST__C(0)
+          && MIST__FN(mist__finite)(fog->base) && MIST__FN(mist__finite)(origin.y);
+    if (fogged) {
+        MIST__V3 v = MIST__FN(mist__unit)(dir);
+        w = v.y < MIST__C(-1) ? MIST__C(-1) : (v.y > MIST__C(1) ? MIST__C(1) : v.y);
+        sR[0] = fog->rayleigh_scat.r; sR[1] = fog->rayleigh_scat.g; sR[2] = fog->rayleigh_scat.b;
+        sM[0] = fog->mie_scat.r;      sM[1] = fog->mie_scat.g;      sM[2] = fog->mie_scat.b;
+        ex[0] = fog->rayleigh_ext.r;  ex[1] = fog->rayleigh_ext.g;  ex[2] = fog->rayleigh_ext.b;
+        st[0] = fog->mie_ext.r;       st[1] = fog->mie_ext.g;       st[2] = fog->mie_ext.b;
+        E[0]  = fog->sun.r;           E[1]  = fog->sun.g;           E[2]  = fog->sun.b;
+        La[0] = fog->ambient.r;       La[1] = fog->ambient.g;       La[2] = fog->ambient.b;
+        for (c = 0; c < 3; ++c) {
+            MIST__T eR, eM;
+            sR[c] = MIST__FN(mist__pos)(sR[c]); sM[c] = MIST__FN(mist__pos)(sM[c]);
+            eR = MIST__FN(mist__pos)(ex[c]); eM = MIST__FN(mist__pos)(st[c]);
+            eR = eR > sR[c] ? eR : sR[c];   eM = eM > sM[c] ? eM : sM[c];
+            st[c] = MIST__FN(mist__pos)(eR + eM);
+            E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]);
+        }
+        ray = MIST__FN(mist__hray_eval)(origin.y, w, MIST__C(0), length, fog->base, H, d0);
+        if (inscatter) {
+            MIST__V3 l = MIST__FN(mist__unit)(fog->sun_dir);
+            MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
+            pR = MIST__FN(mist_rayleigh_eval)(u);
+            pM = MIST__FN(mist_fog_eval)(fog->mie_phase, u);
+            ly = l.y;
+            if (ly > MIST__C(0)) {              /* nu = 1 - w / ly, exact near 0 */
+                nu = (ly - w) / ly;
+                anu = nu < MIST__C(0) ? -nu : nu;
+            }
+        }
+        for (c = 0; c < 3; ++c) {
+            MIST__T tau, I, Is, src, ssun;
+            if (!(st[c] > MIST__C(0)) || !(ray.col > MIST__C(0))) continue;
+            tau = st[c] * ray.col;
+            tr[c] = MIST__M(exp)(-tau);
+            if (!inscatter) continue;
+            /* int_0^s rho e^-tau(t) dt = (1 - e^-tau)/st = col phi1(tau) */
+            I = tau < MIST__C(1) ? ray.col * MIST__FN(mist__phi1)(tau)
+                                 : -MIST__M(expm1)(-tau) / st[c];
+            Is = I;
+            if (fog->sun_extinction) {
+                /* Sun dimmed by the column above each point, rho H / ly:
+                 * int rho e^-(tau(t) + st rho(t) H/ly) dt
+                 *   = e^-min(A0, A1) col phi1(tau |nu|),  nu = 1 - w/ly,
+                 * A0, A1 the sun's optical depth to the start and (plus tau)
+                 * to the end.  See the section comment. */
+                Is = MIST__C(0);
+                if (ly > MIST__C(0)) {
+                    MIST__T Hl = H / ly, a, z, ea;
+                    a = st[c] * ray.rho0;
+                    a = a > MIST__C(0) ? a * Hl : MIST__C(0);            /* A0 */
+                    if (nu < MIST__C(0)) {                               /* A1 */
+                        MIST__T a1 = st[c] * ray.rho1;
+                        a = tau + (a1 > MIST__C(0) ? a1 * Hl : MIST__C(0));
+                    }
+                    ea = MIST__M(exp)(-a);
+                    if (ea > MIST__C(0)) {
+                        z = tau * anu;
+                        Is = ea * (z < MIST__C(1) ? ray.col * MIST__FN(mist__phi1)(z)
+                                                  : -MIST__M(expm1)(-z) / (st[c] * anu));
+                    }
+                }
+            }
+            src  = sR[c] + sM[c];
+            ssun = sR[c] * pR + sM[c] * pM;
+            ls[c] = (src > MIST__C(0) && I > MIST__C(0) ? La[c] * src * I : MIST__C(0))
+                  + (ssun > MIST__C(0) && Is > MIST__C(0) ? E[c] * ssun * Is : MIST__C(0));
+        }
+    }
+    if (transmittance) { transmittance->r = tr[0]; transmittance->g = tr[1]; transmittance->b = tr[2]; }
+    if (inscatter) { inscatter->r = ls[0]; inscatter->g = ls[1]; inscatter->b = ls[2]; }
+}
+
+/* Transmittance alone (per colour band). */
+MIST__F MIST__RGB MIST__FN(mist_hfog_transmittance)(const MIST__HFOG *fog, MIST__V3 origin,
+                                                    MIST__V3 dir, MIST__T length)
+{
+    MIST__RGB t;
+    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, (MIST__RGB *)0);
+    return t;
+}
+
+/* In-scattered radiance alone. */
+MIST__F MIST__RGB MIST__FN(mist_hfog_inscatter)(const MIST__HFOG *fog, MIST__V3 origin,
+                                                MIST__V3 dir, MIST__T length)
+{
+    MIST__RGB l;
+    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, (MIST__RGB *)0, &l);
+    return l;
+}
+
+/* background * transmittance + inscatter: the radiance that reaches
+ * `origin` from a surface at `length` along `dir` (+inf: the sky) of
+ * radiance `background`. */
+MIST__F MIST__RGB MIST__FN(mist_hfog_apply)(const MIST__HFOG *fog, MIST__V3 origin,
+                                            MIST__V3 dir, MIST__T length, MIST__RGB background)
+{
+    MIST__RGB t, l;
+    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, &l);
+    l.r += background.r * t.r;
+    l.g += background.g * t.g;
+    l.b += background.b * t.b;
+    return l;
+}
+
+#undef MIST__RGB
+#undef MIST__HFOG
+#undef MIST__HRAY
+#undef MIST__BIG
+#undef MIST__XLIM
+/* end of the analytic height fog */
 
 #endif /* !MIST__INTERNAL_ONLY */
 
