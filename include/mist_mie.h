@@ -1,0 +1,1143 @@
+/* mist_mie.h - Lorenz-Mie reference for mist: homogeneous spheres, water,
+ * and averages over droplet sizes and wavelengths.                  v0.1.0
+ *
+ * OPT-IN.  A renderer that only wants the analytic phase functions includes
+ * mist.h and never this file; nothing in mist.h refers to it.  This header
+ * is for building reference curves and tables (fits, LUTs, tests).
+ *
+ * Header-only C99, also C++ (C++98 and later).  Double precision only.
+ * Needs <math.h>; <stdlib.h> (malloc/free) only for mist_mie_sphere_new and
+ * mist_mie_average, which say so.
+ *
+ * USAGE
+ *   #include "mist_mie.h"
+ *
+ *   // One sphere: size parameter x = 2 pi r n_medium / lambda and
+ *   // refractive index m = m_particle / n_medium = mr + i mi (mi >= 0).
+ *   mist_mie_sphere s = mist_mie_sphere_new(57.1, mist_mie_water(550, NULL));
+ *   double q = s.q_sca, g = s.g;               // efficiencies, asymmetry
+ *   double p = mist_mie_phase(&s, cos_theta);  // per steradian, sums to 1
+ *   mist_mie_complex s1, s2;
+ *   mist_mie_amplitudes(&s, cos_theta, &s1, &s2);
+ *   mist_mie_sphere_free(&s);
+ *
+ *   // A fog: droplets of a gamma distribution, three wavelengths, a table
+ *   // of the phase function at 1800 angles uniform in theta.
+ *   double mu[1800], table[1800];
+ *   mist_mie_wavelength wl[3];
+ *   mist_mie_dist d = mist_mie_dist_gamma(5.0, 0.1);    // r_eff 5 um, v_eff 0.1
+ *   wl[0] = mist_mie_wl(0.45, 1, mist_mie_water(450, NULL));  ... (um)
+ *   mist_mie_theta_grid(1800, mu);
+ *   mist_mie_avg a = mist_mie_average(&d, wl, 3, 1.0, mu, 1800, table);
+ *   // a.c_ext, a.c_sca (um^2 per droplet), a.g, table[j] = p(theta_j) /sr
+ *
+ * CONVENTIONS
+ *   Bohren & Huffman [BH83]: m = mr + i mi with mi >= 0 (time factor
+ *   exp(-i omega t)), xi_n = psi_n - i chi_n, and their amplitudes S1, S2
+ *   (pp. 111-114).  Wiscombe's MIEV0 [W79] and miepython write m = mr -
+ *   i mi; their S1, S2 are the complex conjugates of these (a_n, b_n too).
+ *   Efficiencies, g and every intensity |S|^2 are the same in both.
+ *   theta is the angle between the incident and scattered PROPAGATION
+ *   directions, mu = cos(theta); S1(1) = S2(1) is the forward amplitude.
+ *   Q_back is [BH83]'s backscattering efficiency 4 |S1(-1)|^2 / x^2, so
+ *   Q_back = 4 pi Q_sca p(-1).
+ *   The phase function is normalised over the sphere:
+ *     p(mu) = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca),  2 pi int p dmu = 1.
+ *   Size parameter x = 2 pi r n_medium / lambda (lambda in vacuum), m =
+ *   m_particle / n_medium.  No global state: every function is reentrant.
+ *
+ * ACCURACY (tests/test_mie.c)
+ *   Wiscombe's 19 MIEV0 test cases: Q_ext, Q_sca, g Q_sca and S1, S2 at
+ *   seven angles agree with his 7 printed digits to within half a unit,
+ *   except where MIEV0 used its small-particle expansions (x |m| < 0.1;
+ *   up to 5e-5 off, confirmed MIEV0's by a 40-digit series) and case 6
+ *   (x = 0.101, 4 units off in MIEV0; Du (2004) agrees with mist_mie).
+ *   The series is cut at Wiscombe's N, as MIEV0 does: measured against a
+ *   30-digit series, that truncation leaves below 5e-8 relative in Q_ext,
+ *   Q_sca and g, and up to 1e-7 in Q_back and the amplitudes near 180
+ *   degrees for x < 1 (1e-8 for x ~ 1 to 20, less beyond).  For m close to
+ *   1 the coefficients' relative error grows like 1e-16 / |m - 1|.
+ *
+ * DOMAIN AND BAD INPUT (tested in tests/test_mie.c)
+ *   x    in (0, MIST_MIE_X_MAX], finite.  Tiny x is exact (the dipole limit
+ *        below 1e-8, where the neglected terms are below 1e-16 relative).
+ *   m    mr > 0, mi >= 0, both not NaN, MIST_MIE_M_MIN <= |m| <=
+ *        MIST_MIE_M_MAX and |m| x <= MIST_MIE_MX_MAX.  mr = +INFINITY (or mi
+ *        = +INFINITY) is the perfectly conducting sphere (mist_mie_conductor).
+ *        m = 1 is valid: nothing scatters (Q = 0, p = 0 everywhere).
+ *   mu   in [-1, 1]; clamped; NaN gives amplitudes 0 and density 0.
+ *   Bad x or m: the sphere has status MIST_MIE_EDOMAIN and every number in
+ *   it is 0; every function given such a sphere returns 0.  Finite valid
+ *   input never gives NaN or infinity.  No function ever reads or writes
+ *   outside the memory it was given.
+ *
+ * REFERENCES (section by section below)
+ *   [BH83] C. Bohren, D. Huffman, "Absorption and Scattering of Light by
+ *          Small Particles", Wiley 1983: ch. 4 (pp. 94-95 pi_n, tau_n;
+ *          pp. 111-114 S1, S2; pp. 103, 119-122 cross sections, g,
+ *          backscatter; p. 127 eqs. 4.88-4.89 a_n, b_n from D_n) and ch. 5
+ *          (the small-particle limit).
+ *   [W79]  W. Wiscombe, "Mie scattering calculations: advances in technique
+ *          and fast, vector-speed computer codes", NCAR TN-140+STR (1979,
+ *          edited 1996) and [W80] "Improved Mie scattering algorithms",
+ *          Appl. Opt. 19, 1505-1509 (1980): eqs. 1a-1e (Q_ext, Q_sca, g Q_sca,
+ *          S1, S2; W79 eqs. R6-R8), the number of terms (W79 eq. R50, W80
+ *          p. 1508), D_n downward from a Lentz start (W79 eq. R23), the
+ *          perfectly conducting sphere (W79 eqs. R/A.1-2).
+ *   [L76]  W. Lentz, "Generating Bessel functions in Mie scattering
+ *          calculations using continued fractions", Appl. Opt. 15, 668-671
+ *          (1976); modified as in I. Thompson, A. Barnett, J. Comput. Phys.
+ *          64, 490 (1986).
+ *   [D04]  H. Du, "Mie-scattering calculation", Appl. Opt. 43, 1951-1956
+ *          (2004): why the starting value of the downward recurrence matters.
+ *   [HQ73] G. Hale, M. Querry, "Optical constants of water in the 200-nm to
+ *          200-um wavelength region", Appl. Opt. 12, 555-563 (1973), Table I.
+ *   [HT74] J. Hansen, L. Travis, "Light scattering in planetary atmospheres",
+ *          Space Sci. Rev. 16, 527-610 (1974), eq. 2.56.
+ *   [D69]  D. Deirmendjian, "Electromagnetic Scattering on Spherical
+ *          Polydispersions", Elsevier 1969 (modified gamma distribution).
+ *
+ * LICENSE: MIT (see the end of include/mist.h).
+ */
+#ifndef MIST_MIE_H
+#define MIST_MIE_H
+
+#define MIST_MIE_VERSION_STRING "0.1.0"
+
+#include <math.h>
+#include <float.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#ifndef MIST_MIE_FUNC
+#  define MIST_MIE_FUNC static inline
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* Status codes and limits                                                  */
+/* ------------------------------------------------------------------------ */
+
+#define MIST_MIE_OK       0   /* success                                       */
+#define MIST_MIE_EDOMAIN  1   /* input outside the documented domain           */
+#define MIST_MIE_ENOMEM   2   /* workspace too small / NULL, or malloc failed  */
+#define MIST_MIE_CLAMPED  3   /* mist_mie_water only: wavelength outside the
+                                 table, the nearest end value is returned     */
+
+#define MIST_MIE_X_MAX    1e5   /* largest size parameter                      */
+#define MIST_MIE_M_MIN    1e-6  /* smallest |m|                                */
+#define MIST_MIE_M_MAX    1e6   /* largest finite |m|                          */
+#define MIST_MIE_MX_MAX   1e7   /* largest |m| x (the continued fraction costs
+                                   about |m| x steps)                          */
+
+/* size distributions, see mist_mie_dist_* */
+#define MIST_MIE_DIST_MONO      0
+#define MIST_MIE_DIST_GAMMA     1
+#define MIST_MIE_DIST_MODGAMMA  2
+#define MIST_MIE_DIST_LOGNORMAL 3
+#define MIST_MIE_DIST_TABLE     4
+
+#define MIST_MIE__PI    3.14159265358979323846264338327950288
+#define MIST_MIE__X_TINY 1e-8   /* below: the dipole limit (see the sphere) */
+
+/* ------------------------------------------------------------------------ */
+/* Types                                                                    */
+/* ------------------------------------------------------------------------ */
+
+/* A complex number (not <complex.h>, so the header is C++ too). */
+typedef struct mist_mie_complex { double re, im; } mist_mie_complex;
+
+/* One homogeneous sphere: the result of mist_mie_sphere_make / _new.
+ * On error status != MIST_MIE_OK and every number is 0.  The series
+ * coefficients live in the caller's workspace (or, from _new, in memory the
+ * sphere owns): the sphere is valid while that memory is. */
+typedef struct mist_mie_sphere {
+    int status;            /* MIST_MIE_OK or MIST_MIE_EDOMAIN / _ENOMEM     */
+    int n_terms;           /* N, terms of the series [W80]                  */
+    double x;              /* size parameter                                */
+    mist_mie_complex m;    /* refractive index (mr = +inf: conductor)       */
+    double q_ext, q_sca, q_abs, q_back;   /* efficiencies (cross section /
+                                              pi r^2); q_abs = q_ext - q_sca */
+    double g;              /* asymmetry parameter <cos theta>               */
+    /* internal */
+    const double *coef_;   /* 6 doubles per term, see mist_mie_sphere_make  */
+    double amp_scale_;     /* amplitudes = amp_scale_ * the series          */
+    double p_norm_;        /* p = p_norm_ * (|S1|^2 + |S2|^2) of the series */
+    double *owned_;        /* memory from mist_mie_sphere_new, else NULL    */
+} mist_mie_sphere;
+
+/* One wavelength of an average: vacuum wavelength (same length unit as the
+ * radii), weight >= 0 (e.g. spectral power times sensitivity; normalised
+ * by their sum), and the particle's refractive index there (absolute; it
+ * is divided by the medium's index). */
+typedef struct mist_mie_wavelength {
+    double lambda, weight;
+    mist_mie_complex m;
+} mist_mie_wavelength;
+
+/* A number distribution of radii n(r) (any normalisation: it is normalised
+ * numerically over [r_min, r_max]).  Build it with mist_mie_dist_*; then
+ * r_min, r_max (0, 0: automatic) and n_radii (0: automatic) may be set. */
+typedef struct mist_mie_dist {
+    int kind;                  /* MIST_MIE_DIST_*                            */
+    double p1, p2, p3;         /* parameters, see the constructors           */
+    double r_min, r_max;       /* integration range; both 0: automatic       */
+    int n_radii;               /* quadrature nodes; 0: automatic             */
+    const double *r, *w;       /* MIST_MIE_DIST_TABLE: radii and weights     */
+    size_t n;                  /* MIST_MIE_DIST_TABLE: number of nodes       */
+} mist_mie_dist;
+
+/* The result of mist_mie_average: per particle, averaged over the size
+ * distribution and the wavelengths.  Cross sections in (length unit)^2. */
+typedef struct mist_mie_avg {
+    int status;            /* MIST_MIE_OK, _EDOMAIN or _ENOMEM              */
+    double c_ext, c_sca, c_abs, c_back;   /* mean cross sections            */
+    double g;              /* asymmetry, weighted by scattering             */
+    double albedo;         /* c_sca / c_ext (0 if c_ext = 0)                */
+    double area, volume;   /* mean pi r^2 and 4/3 pi r^3                    */
+    double r_min, r_max;   /* the range used                                */
+    int n_radii;           /* the nodes used                                */
+} mist_mie_avg;
+
+/* ======================================================================== */
+/* Small helpers                                                            */
+/* ======================================================================== */
+
+MIST_MIE_FUNC mist_mie_complex mist_mie_cplx(double re, double im)
+{
+    mist_mie_complex z;
+    z.re = re; z.im = im;
+    return z;
+}
+
+/* The perfectly conducting sphere's "refractive index": (+inf, 0). */
+MIST_MIE_FUNC mist_mie_complex mist_mie_conductor(void)
+{
+    return mist_mie_cplx((double)INFINITY, 0.0);
+}
+
+/* A wavelength entry for mist_mie_average (checked there). */
+MIST_MIE_FUNC mist_mie_wavelength mist_mie_wl(double lambda, double weight,
+                                              mist_mie_complex m)
+{
+    mist_mie_wavelength w;
+    w.lambda = lambda; w.weight = weight; w.m = m;
+    return w;
+}
+
+MIST_MIE_FUNC mist_mie_complex mist_mie__add(mist_mie_complex a, mist_mie_complex b)
+{ return mist_mie_cplx(a.re + b.re, a.im + b.im); }
+MIST_MIE_FUNC mist_mie_complex mist_mie__sub(mist_mie_complex a, mist_mie_complex b)
+{ return mist_mie_cplx(a.re - b.re, a.im - b.im); }
+MIST_MIE_FUNC mist_mie_complex mist_mie__mul(mist_mie_complex a, mist_mie_complex b)
+{ return mist_mie_cplx(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re); }
+MIST_MIE_FUNC mist_mie_complex mist_mie__scale(mist_mie_complex a, double s)
+{ return mist_mie_cplx(a.re * s, a.im * s); }
+MIST_MIE_FUNC double mist_mie__abs2(mist_mie_complex a)
+{ return a.re * a.re + a.im * a.im; }
+
+/* a / b by Smith's algorithm (no overflow from |b|^2).  b != 0. */
+MIST_MIE_FUNC mist_mie_complex mist_mie__div(mist_mie_complex a, mist_mie_complex b)
+{
+    double r, d;
+    if (fabs(b.re) >= fabs(b.im)) {
+        r = b.im / b.re; d = b.re + b.im * r;
+        return mist_mie_cplx((a.re + a.im * r) / d, (a.im - a.re * r) / d);
+    }
+    r = b.re / b.im; d = b.re * r + b.im;
+    return mist_mie_cplx((a.re * r + a.im) / d, (a.im * r - a.re) / d);
+}
+
+/* 1 / b, with an exact zero replaced by a tiny number (the recurrences
+ * below divide by quantities that vanish only by coincidence; a huge but
+ * finite result keeps the limit right, as [L76] and Thompson-Barnett do). */
+MIST_MIE_FUNC mist_mie_complex mist_mie__inv(mist_mie_complex b)
+{
+    if (b.re == 0 && b.im == 0) b.re = 1e-150;
+    return mist_mie__div(mist_mie_cplx(1, 0), b);
+}
+
+/* ======================================================================== */
+/* Number of terms  [W80 p. 1508, W79 eq. R50]                              */
+/*   N = x + 4 x^(1/3) + 1      x <= 8                                      */
+/*   N = x + 4.05 x^(1/3) + 2   8 < x < 4200                                */
+/*   N = x + 4 x^(1/3) + 2      4200 <= x                                   */
+/* truncated to an integer, as MIEV0 does.                                  */
+/* ======================================================================== */
+
+/* Wiscombe's N(x).  Domain: x in (0, MIST_MIE_X_MAX]; else 0. */
+MIST_MIE_FUNC int mist_mie_terms(double x)
+{
+    double c;
+    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
+    c = pow(x, 1.0 / 3.0);
+    if (x <= 8) return (int)(x + 4 * c + 1);
+    if (x < 4200) return (int)(x + 4.05 * c + 2);
+    return (int)(x + 4 * c + 2);
+}
+
+/* Doubles of workspace mist_mie_sphere_make needs at size parameter x
+ * (9 (N + 1); 72 (N + 1) bytes).  Domain as mist_mie_terms; 0 if invalid. */
+MIST_MIE_FUNC size_t mist_mie_workspace_size(double x)
+{
+    int n = mist_mie_terms(x);
+    return n > 0 ? 9 * ((size_t)n + 1) : 0;
+}
+
+/* ======================================================================== */
+/* Logarithmic derivative D_n(z) = psi_n'(z) / psi_n(z)                     */
+/* [L76]: D_N from the continued fraction of J_{N-1/2}(z) / J_{N+1/2}(z),   */
+/*   D_N = -N/z + a_1 + 1/(a_2 + 1/(a_3 + ...)),                            */
+/*   a_k = (-1)^(k+1) (2N + 2k - 1) / z,                                    */
+/* evaluated by the modified Lentz method; then the downward recurrence     */
+/* [BH83 eq. 4.89, W79 eq. R23]  D_{n-1} = n/z - 1/(D_n + n/z), stable for */
+/* every z (MIEV0 recurs upward where that is safe; downward always is).    */
+/* Starting from the exact D_N avoids the guessed starting index of BHMIE   */
+/* (wrong for large |Im z| [D04]).  The fraction converges once k exceeds   */
+/* about |z|: the cost is O(|z| + N).                                        */
+/* ======================================================================== */
+
+MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
+{
+    mist_mie_complex zi = mist_mie__inv(z);
+    mist_mie_complex f, c, d, ak, delta;
+    double az = sqrt(mist_mie__abs2(z));
+    long k, kmax = (long)(4 * az) + 4L * n + 1000;
+    double sgn = -1;
+    f = c = mist_mie__scale(zi, 2.0 * n + 1);          /* a_1 */
+    d = mist_mie_cplx(0, 0);
+    for (k = 2; k < kmax; ++k, sgn = -sgn) {
+        ak = mist_mie__scale(zi, sgn * (2.0 * n + 2.0 * (double)k - 1));
+        d = mist_mie__inv(mist_mie__add(ak, d));
+        c = mist_mie__add(ak, mist_mie__inv(c));
+        if (c.re == 0 && c.im == 0) c.re = 1e-150;
+        delta = mist_mie__mul(c, d);
+        f = mist_mie__mul(f, delta);
+        if (fabs(delta.re - 1) + fabs(delta.im) < 2 * DBL_EPSILON) break;
+    }
+    return mist_mie__sub(f, mist_mie__scale(zi, (double)n));
+}
+
+/* ======================================================================== */
+/* The sphere: Mie coefficients a_n, b_n and efficiencies                   */
+/*                                                                          */
+/* [BH83 eq. 4.88]  a_n = (T_a psi_n - psi_{n-1}) / (T_a xi_n - xi_{n-1}),  */
+/*                  T_a = D_n(mx)/m + n/x,  and b_n with T_b = m D_n(mx) +  */
+/*                  n/x;  psi_n, xi_n = psi_n - i chi_n at the real x.      */
+/* psi_n, chi_n: upward recurrence  f_n = (2n-1)/x f_{n-1} - f_{n-2}  while */
+/* n <= x (both oscillate: stable).  For n > x psi_n decays and the upward  */
+/* recurrence would lose it (all of it for small x), so there               */
+/*   psi_n = psi_{n-1} / (D_n(x) + n/x)  with the real D_n(x) of the        */
+/* section above (positive: psi has no zero for x < n), and the numerators  */
+/* are written psi_n (D_n(mx)/m - D_n(x)), psi_n (m D_n(mx) - D_n(x)),      */
+/* which cancel no n/x.  chi_n grows: upward is stable throughout.          */
+/* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
+/* b_n = psi_n / xi_n (the m -> infinity limit of the same formulas).       */
+/*                                                                          */
+/* Efficiencies [W80 eqs. 1a-1c = W79 R6-R8; BH83 pp. 103, 120-122]:       */
+/*   Q_ext = 2/x^2 sum (2n+1) Re(a_n + b_n)                                 */
+/*   Q_sca = 2/x^2 sum (2n+1) (|a_n|^2 + |b_n|^2)                           */
+/*   g Q_sca = 4/x^2 sum [ n(n+2)/(n+1) Re(a_n a*_{n+1} + b_n b*_{n+1})     */
+/*                       + (2n+1)/(n(n+1)) Re(a_n b*_n) ]                   */
+/*   Q_back = 1/x^2 |sum (2n+1) (-1)^n (a_n - b_n)|^2                       */
+/* For mi = 0 (and the conductor) Q_ext is set to Q_sca, Q_abs = 0.         */
+/*                                                                          */
+/* The dipole limit [BH83 ch. 5], used for x max(1, |m|) < 1e-8 (x < 1e-8   */
+/* for the conductor), where every neglected term is below 1e-16 relative  */
+/* and the series would underflow:                                          */
+/*   K = (m^2-1)/(m^2+2), a_1 = -i (2/3) x^3 K, b_1 = 0;                    */
+/*   Q_abs = 4 x Im K, Q_sca = 8/3 x^4 |K|^2, Q_back = 4 x^4 |K|^2, g = 0;  */
+/*   conductor: a_1 = -i (2/3) x^3, b_1 = i x^3/3, Q_sca = 10/3 x^4,       */
+/*   Q_back = 9 x^4, g = -2/5.                                              */
+/* The coefficients are then stored divided by x^3 (amp_scale_ = x^3); the  */
+/* phase function, a ratio, is unaffected:                                  */
+/*   p = (|S1|^2 + |S2|^2) / (4 pi sum (2n+1) (|a_n|^2 + |b_n|^2)).          */
+/*                                                                          */
+/* Stored per term n (6 doubles): c_n a_n, c_n b_n (c_n = (2n+1)/(n(n+1)))  */
+/* and the pi_n recurrence factors (2n+1)/n, (n+1)/n, so the per-angle sum  */
+/* needs no division.                                                       */
+/* ======================================================================== */
+
+/* x, m inside the domain?  *pec: the perfectly conducting sphere. */
+MIST_MIE_FUNC int mist_mie__valid(double x, mist_mie_complex m, int *pec)
+{
+    double am;
+    *pec = 0;
+    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;           /* also NaN */
+    if (m.re != m.re || m.im != m.im) return 0;
+    if (!(m.re > 0) || !(m.im >= 0)) return 0;
+    if (m.re == (double)INFINITY || m.im == (double)INFINITY) { *pec = 1; return 1; }
+    am = sqrt(m.re * m.re + m.im * m.im);
+    if (!(am >= MIST_MIE_M_MIN && am <= MIST_MIE_M_MAX)) return 0;
+    if (!(am * x <= MIST_MIE_MX_MAX)) return 0;
+    return 1;
+}
+
+MIST_MIE_FUNC void mist_mie__store(double *c, int n, mist_mie_complex a, mist_mie_complex b)
+{
+    double fn = n, cn = (2 * fn + 1) / (fn * (fn + 1));
+    c[0] = cn * a.re; c[1] = cn * a.im;
+    c[2] = cn * b.re; c[3] = cn * b.im;
+    c[4] = (2 * fn + 1) / fn;
+    c[5] = (fn + 1) / fn;
+}
+
+MIST_MIE_FUNC mist_mie_sphere mist_mie__zero(int status)
+{
+    mist_mie_sphere s;
+    s.status = status; s.n_terms = 0; s.x = 0; s.m = mist_mie_cplx(0, 0);
+    s.q_ext = s.q_sca = s.q_abs = s.q_back = s.g = 0;
+    s.coef_ = NULL; s.amp_scale_ = 0; s.p_norm_ = 0; s.owned_ = NULL;
+    return s;
+}
+
+/* The sphere of size parameter x and refractive index m, its coefficients
+ * in work[0 .. n_work).  Domain: see DOMAIN AND BAD INPUT; bad x or m:
+ * status MIST_MIE_EDOMAIN.  n_work >= mist_mie_workspace_size(x), else
+ * (or work NULL) status MIST_MIE_ENOMEM.  No allocation.  Cost O(N + |m| x):
+ * about 1 ms at x = 1e4, m = 1.33; 0.16 s at |m| x = MIST_MIE_MX_MAX. */
+MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
+                                                   double *work, size_t n_work)
+{
+    mist_mie_sphere s;
+    int pec, nt, n, n1;
+    double *coef, *dm, *dx;
+    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am;
+    double qext = 0, qsca = 0, gsum = 0;
+    mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
+    mist_mie_complex z;
+
+    if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
+    nt = mist_mie_terms(x);
+    if (!work || n_work < mist_mie_workspace_size(x))
+        return mist_mie__zero(MIST_MIE_ENOMEM);
+    s = mist_mie__zero(MIST_MIE_OK);
+    s.x = x; s.m = m; s.coef_ = work; s.amp_scale_ = 1;
+    coef = work;
+
+    /* ---- the dipole limit ---- */
+    am = pec ? 1 : sqrt(m.re * m.re + m.im * m.im);
+    if (x * (am > 1 ? am : 1) < MIST_MIE__X_TINY) {
+        mist_mie_complex a1, b1;
+        double x2 = x * x, x4 = x2 * x2, s2;
+        if (pec) {
+            a1 = mist_mie_cplx(0, -2.0 / 3);
+            b1 = mist_mie_cplx(0, 1.0 / 3);
+            s.q_sca = s.q_ext = 10.0 / 3 * x4;
+            s.q_back = 9 * x4;
+            s.g = -0.4;
+        } else {
+            mist_mie_complex m2 = mist_mie__mul(m, m), k;
+            k = mist_mie__div(mist_mie_cplx(m2.re - 1, m2.im), mist_mie_cplx(m2.re + 2, m2.im));
+            a1 = mist_mie_cplx(2.0 / 3 * k.im, -2.0 / 3 * k.re);   /* -i 2/3 K */
+            b1 = mist_mie_cplx(0, 0);
+            s.q_abs = m.im > 0 ? 4 * x * k.im : 0;
+            if (s.q_abs < 0) s.q_abs = 0;
+            s.q_sca = 8.0 / 3 * x4 * mist_mie__abs2(k);
+            s.q_ext = s.q_abs + s.q_sca;
+            s.q_back = 4 * x4 * mist_mie__abs2(k);
+            s.g = 0;
+        }
+        mist_mie__store(coef, 1, a1, b1);
+        s.n_terms = 1;
+        s.amp_scale_ = x2 * x;
+        s2 = 3 * (mist_mie__abs2(a1) + mist_mie__abs2(b1));
+        s.p_norm_ = s2 > 0 ? 1 / (4 * MIST_MIE__PI * s2) : 0;
+        return s;
+    }
+
+    /* ---- m = 1: no sphere at all; exactly 0 (the series would give
+     * rounding noise of order eps) ---- */
+    if (!pec && m.re == 1 && m.im == 0) {
+        mist_mie__store(coef, 1, mist_mie_cplx(0, 0), mist_mie_cplx(0, 0));
+        s.n_terms = 1;
+        return s;
+    }
+
+    /* ---- the series ---- */
+    s.n_terms = nt;
+    dm = work + 6 * ((size_t)nt + 1);          /* D_n(mx), 2 doubles per n  */
+    dx = work + 8 * ((size_t)nt + 1);          /* D_n(x) for n > x          */
+    ix = 1 / x;
+    z = mist_mie__scale(m, x);
+    if (!pec) {
+        mist_mie_complex d = mist_mie__lentz(nt, z), zi = mist_mie__inv(z);
+        dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
+        for (n = nt; n > 1; --n) {
+            mist_mie_complex nz = mist_mie__scale(zi, (double)n);
+            d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
+            dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
+        }
+    }
+    n1 = (int)floor(x) + 1;                     /* first n with n > x */
+    if (n1 <= nt) {
+        double d = mist_mie__lentz(nt, mist_mie_cplx(x, 0)).re;
+        dx[nt] = d;
+        for (n = nt; n > n1; --n) {
+            double den = d + n * ix;
+            if (den == 0) den = 1e-150;
+            d = n * ix - 1 / den;
+            dx[n - 1] = d;
+        }
+    }
+
+    sinx = sin(x); cosx = cos(x);
+    psi0 = cosx; psi1 = sinx;                   /* psi_{-1}, psi_0 */
+    chi0 = -sinx; chi1 = cosx;                  /* chi_{-1}, chi_0 */
+    for (n = 1; n <= nt; ++n) {
+        double fn = n, psi, chi, nx = fn * ix;
+        mist_mie_complex a, b, xin, xim, dmn = mist_mie_cplx(0, 0);
+        if (n < n1) psi = (2 * fn - 1) * ix * psi1 - psi0;
+        else        psi = psi1 / (dx[n] + nx);
+        chi = (2 * fn - 1) * ix * chi1 - chi0;
+        xin = mist_mie_cplx(psi, -chi);
+        xim = mist_mie_cplx(psi1, -chi1);
+        if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
+        {   /* a_n */
+            mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
+            mist_mie_complex ta = mist_mie_cplx(qa.re + nx, qa.im), num, den;
+            if (n < n1)
+                num = mist_mie_cplx(ta.re * psi - psi1, ta.im * psi);
+            else
+                num = mist_mie__scale(mist_mie_cplx(qa.re - dx[n], qa.im), psi);
+            den = mist_mie__sub(mist_mie__mul(ta, xin), xim);
+            a = (den.re == 0 && den.im == 0) ? mist_mie_cplx(0, 0) : mist_mie__div(num, den);
+        }
+        if (pec) {
+            b = mist_mie__div(mist_mie_cplx(psi, 0), xin);
+        } else {   /* b_n */
+            mist_mie_complex qb = mist_mie__mul(m, dmn);
+            mist_mie_complex tb = mist_mie_cplx(qb.re + nx, qb.im), num, den;
+            if (n < n1)
+                num = mist_mie_cplx(tb.re * psi - psi1, tb.im * psi);
+            else
+                num = mist_mie__scale(mist_mie_cplx(qb.re - dx[n], qb.im), psi);
+            den = mist_mie__sub(mist_mie__mul(tb, xin), xim);
+            b = (den.re == 0 && den.im == 0) ? mist_mie_cplx(0, 0) : mist_mie__div(num, den);
+        }
+        mist_mie__store(coef + 6 * (size_t)(n - 1), n, a, b);
+
+        qext += (2 * fn + 1) * (a.re + b.re);
+        qsca += (2 * fn + 1) * (mist_mie__abs2(a) + mist_mie__abs2(b));
+        gsum += (2 * fn + 1) / (fn * (fn + 1)) * (a.re * b.re + a.im * b.im);
+        if (n > 1)
+            gsum += (fn - 1) * (fn + 1) / fn
+                  * (ap.re * a.re + ap.im * a.im + bp.re * b.re + bp.im * b.im);
+        if (n & 1) back = mist_mie__sub(back, mist_mie__scale(mist_mie__sub(a, b), 2 * fn + 1));
+        else       back = mist_mie__add(back, mist_mie__scale(mist_mie__sub(a, b), 2 * fn + 1));
+        ap = a; bp = b;
+        psi0 = psi1; psi1 = psi;
+        chi0 = chi1; chi1 = chi;
+    }
+    s.q_sca = 2 * qsca * ix * ix;
+    if (pec || m.im == 0) {
+        s.q_ext = s.q_sca;
+        s.q_abs = 0;
+    } else {
+        s.q_ext = 2 * qext * ix * ix;
+        s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
+    }
+    s.q_back = mist_mie__abs2(back) * ix * ix;
+    s.g = qsca > 0 ? 2 * gsum / qsca : 0;
+    s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
+    return s;
+}
+
+/* The sphere with its own memory (one malloc of mist_mie_workspace_size(x)
+ * doubles); malloc failure: status MIST_MIE_ENOMEM.  Free it with
+ * mist_mie_sphere_free.  Domain as mist_mie_sphere_make. */
+MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_new(double x, mist_mie_complex m)
+{
+    mist_mie_sphere s;
+    size_t nw;
+    double *w;
+    int pec;
+    if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
+    nw = mist_mie_workspace_size(x);
+    w = (double *)malloc(nw * sizeof(double));
+    if (!w) return mist_mie__zero(MIST_MIE_ENOMEM);
+    s = mist_mie_sphere_make(x, m, w, nw);
+    if (s.status != MIST_MIE_OK) { free(w); return s; }
+    s.owned_ = w;
+    return s;
+}
+
+/* Frees the memory of a sphere from mist_mie_sphere_new (any other sphere:
+ * nothing) and zeroes it.  s may be NULL. */
+MIST_MIE_FUNC void mist_mie_sphere_free(mist_mie_sphere *s)
+{
+    if (!s) return;
+    free(s->owned_);
+    *s = mist_mie__zero(MIST_MIE_EDOMAIN);
+}
+
+/* ======================================================================== */
+/* Amplitudes and the phase function  [BH83 pp. 94-95, 111-114; W80 1d-1e]  */
+/*   S1 = sum c_n (a_n pi_n + b_n tau_n),  S2 = sum c_n (a_n tau_n + b_n pi_n)*/
+/*   pi_{n+1} = (2n+1)/n mu pi_n - (n+1)/n pi_{n-1},  pi_0 = 0, pi_1 = 1,   */
+/*   tau_n = n mu pi_n - (n+1) pi_{n-1}   (upward in n: stable).             */
+/* With pi_n(-mu) = (-1)^(n-1) pi_n(mu), tau_n(-mu) = (-1)^n tau_n(mu), one */
+/* pass gives mu and -mu: the tables use it when their angles pair up.      */
+/* ======================================================================== */
+
+/* out[0..3]: S1(mu), S2(mu) (re, im) of the stored series; with pair, also
+ * out[4..7]: S1(-mu), S2(-mu). */
+MIST_MIE_FUNC void mist_mie__sums(const mist_mie_sphere *s, double mu, int pair,
+                                  double *out)
+{
+    const double *c = s->coef_;
+    int n, nt = s->n_terms;
+    double pim = 0, pin = 1, fn = 1, sg = 1;
+    double s1r = 0, s1i = 0, s2r = 0, s2i = 0;
+    double t1r = 0, t1i = 0, t2r = 0, t2i = 0;
+    if (!pair) {
+        for (n = 1; n <= nt; ++n, c += 6) {
+            double tau = fn * mu * pin - (fn + 1) * pim, pnx;
+            s1r += c[0] * pin + c[2] * tau;  s1i += c[1] * pin + c[3] * tau;
+            s2r += c[0] * tau + c[2] * pin;  s2i += c[1] * tau + c[3] * pin;
+            pnx = c[4] * mu * pin - c[5] * pim;
+            pim = pin; pin = pnx; fn += 1;
+        }
+    } else {
+        for (n = 1; n <= nt; ++n, c += 6) {
+            double tau = fn * mu * pin - (fn + 1) * pim, pnx;
+            double apr = c[0] * pin, api = c[1] * pin, btr = c[2] * tau, bti = c[3] * tau;
+            double atr = c[0] * tau, ati = c[1] * tau, bpr = c[2] * pin, bpi = c[3] * pin;
+            s1r += apr + btr;  s1i += api + bti;
+            s2r += atr + bpr;  s2i += ati + bpi;
+            t1r += sg * (apr - btr);  t1i += sg * (api - bti);
+            t2r += sg * (bpr - atr);  t2i += sg * (bpi - ati);
+            pnx = c[4] * mu * pin - c[5] * pim;
+            pim = pin; pin = pnx; fn += 1; sg = -sg;
+        }
+    }
+    out[0] = s1r; out[1] = s1i; out[2] = s2r; out[3] = s2i;
+    if (pair) { out[4] = t1r; out[5] = t1i; out[6] = t2r; out[7] = t2i; }
+}
+
+/* mu clamped to [-1, 1]; NaN -> not usable (returns 0). */
+MIST_MIE_FUNC int mist_mie__mu(double *mu)
+{
+    if (*mu != *mu) return 0;
+    if (*mu < -1) *mu = -1;
+    if (*mu > 1) *mu = 1;
+    return 1;
+}
+
+/* Scattering amplitudes S1(mu), S2(mu) [BH83 convention, see the top].
+ * Domain: mu in [-1, 1] (clamped; NaN gives 0).  A sphere with an error
+ * status gives 0.  s1 or s2 may be NULL.  Cost O(N). */
+MIST_MIE_FUNC void mist_mie_amplitudes(const mist_mie_sphere *s, double mu,
+                                       mist_mie_complex *s1, mist_mie_complex *s2)
+{
+    double o[4] = {0, 0, 0, 0}, k = 0;
+    if (s && s->status == MIST_MIE_OK && mist_mie__mu(&mu)) {
+        mist_mie__sums(s, mu, 0, o);
+        k = s->amp_scale_;
+    }
+    if (s1) *s1 = mist_mie_cplx(k * o[0], k * o[1]);
+    if (s2) *s2 = mist_mie_cplx(k * o[2], k * o[3]);
+}
+
+/* The phase function p(mu) per steradian, normalised over the sphere:
+ * (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca).  Domain: mu in [-1, 1] (clamped;
+ * NaN gives 0).  0 for an error sphere and for one that does not scatter
+ * (m = 1).  Cost O(N). */
+MIST_MIE_FUNC double mist_mie_phase(const mist_mie_sphere *s, double mu)
+{
+    double o[4];
+    if (!s || s->status != MIST_MIE_OK || !mist_mie__mu(&mu)) return 0;
+    mist_mie__sums(s, mu, 0, o);
+    return s->p_norm_ * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2] + o[3] * o[3]);
+}
+
+/* Blocks of angles for the tables: the same sums as mist_mie__sums, n in
+ * the outer loop and up to MIST_MIE__BLK cosines in the inner one, so the
+ * compiler can run the angles side by side (MIEV0's "vectorizable loop").
+ * ip[b], im[b] = |S1|^2 + |S2|^2 at mu[b] and -mu[b], series units;
+ * mu[b] in [-1, 1]. */
+#define MIST_MIE__BLK 16
+MIST_MIE_FUNC void mist_mie__block(const mist_mie_sphere *s, const double *mu, int nb,
+                                   double *ip, double *im)
+{
+    double pim[MIST_MIE__BLK], pin[MIST_MIE__BLK];
+    double s1r[MIST_MIE__BLK], s1i[MIST_MIE__BLK], s2r[MIST_MIE__BLK], s2i[MIST_MIE__BLK];
+    double t1r[MIST_MIE__BLK], t1i[MIST_MIE__BLK], t2r[MIST_MIE__BLK], t2i[MIST_MIE__BLK];
+    const double *c = s->coef_;
+    double fn = 1, sg = 1;
+    int n, b, nt = s->n_terms;
+    for (b = 0; b < MIST_MIE__BLK; ++b) {
+        pim[b] = 0; pin[b] = 1;
+        s1r[b] = s1i[b] = s2r[b] = s2i[b] = t1r[b] = t1i[b] = t2r[b] = t2i[b] = 0;
+    }
+    for (n = 1; n <= nt; ++n, c += 6) {
+        double ar = c[0], ai = c[1], br = c[2], bi = c[3], r1 = c[4], r2 = c[5];
+        double fn1 = fn + 1;
+        for (b = 0; b < MIST_MIE__BLK; ++b) {
+            double u = mu[b], p = pin[b], pm = pim[b];
+            double tau = fn * u * p - fn1 * pm;
+            double apr = ar * p, api = ai * p, btr = br * tau, bti = bi * tau;
+            double atr = ar * tau, ati = ai * tau, bpr = br * p, bpi = bi * p;
+            s1r[b] += apr + btr;  s1i[b] += api + bti;
+            s2r[b] += atr + bpr;  s2i[b] += ati + bpi;
+            t1r[b] += sg * (apr - btr);  t1i[b] += sg * (api - bti);
+            t2r[b] += sg * (bpr - atr);  t2i[b] += sg * (bpi - ati);
+            pim[b] = p;
+            pin[b] = r1 * u * p - r2 * pm;
+        }
+        fn = fn1; sg = -sg;
+    }
+    for (b = 0; b < nb; ++b) {
+        ip[b] = s1r[b] * s1r[b] + s1i[b] * s1i[b] + s2r[b] * s2r[b] + s2i[b] * s2i[b];
+        im[b] = t1r[b] * t1r[b] + t1i[b] * t1i[b] + t2r[b] * t2r[b] + t2i[b] * t2i[b];
+    }
+}
+
+/* out[j] (=, or += if add) scale * (|S1|^2 + |S2|^2) of the stored series
+ * at mu[j], j < n.  Angles with mu[n-1-j] = -mu[j] share one evaluation;
+ * out-of-range cosines are clamped, NaN gives 0. */
+MIST_MIE_FUNC void mist_mie__table(const mist_mie_sphere *s, const double *mu, size_t n,
+                                   double scale, int add, double *out)
+{
+    double bu[MIST_MIE__BLK], ip[MIST_MIE__BLK], im[MIST_MIE__BLK];
+    size_t bj[MIST_MIE__BLK], bk[MIST_MIE__BLK], j;
+    int nb = 0, b;
+    for (j = 0; j <= n; ++j) {
+        if (j < n) {
+            size_t k = n - 1 - j;
+            double u = mu[j];
+            int paired = j != k && mu[k] == -mu[j] && u == u && u >= -1 && u <= 1;
+            if (paired && j > k) continue;         /* done with its mirror */
+            if (!mist_mie__mu(&u)) {               /* NaN */
+                if (!add) out[j] = 0;
+                continue;
+            }
+            bu[nb] = u; bj[nb] = j; bk[nb] = paired ? k : n;
+            ++nb;
+        }
+        if (nb == MIST_MIE__BLK || (j == n && nb > 0)) {
+            for (b = nb; b < MIST_MIE__BLK; ++b) bu[b] = 0;
+            mist_mie__block(s, bu, nb, ip, im);
+            for (b = 0; b < nb; ++b) {
+                if (add) out[bj[b]] += scale * ip[b]; else out[bj[b]] = scale * ip[b];
+                if (bk[b] < n) {
+                    if (add) out[bk[b]] += scale * im[b]; else out[bk[b]] = scale * im[b];
+                }
+            }
+            nb = 0;
+        }
+    }
+}
+
+/* p[j] = mist_mie_phase(s, mu[j]) for j < n; angles that come in pairs
+ * mu[n-1-j] = -mu[j] (as from mist_mie_theta_grid) cost one evaluation.
+ * Domain as mist_mie_phase; mu and p may be NULL only if n = 0. */
+MIST_MIE_FUNC void mist_mie_phase_table(const mist_mie_sphere *s, const double *mu,
+                                        size_t n, double *p)
+{
+    size_t j;
+    if (!s || s->status != MIST_MIE_OK) {
+        for (j = 0; j < n; ++j) p[j] = 0;
+        return;
+    }
+    mist_mie__table(s, mu, n, s->p_norm_, 0, p);
+}
+
+/* mu[j] = cos(pi j / (n - 1)), j < n: uniform in theta from 0 to 180
+ * degrees, exactly antisymmetric (mu[n-1-j] = -mu[j], mu = 0 exactly in the
+ * middle).  n = 1 gives mu[0] = 1; n = 0 writes nothing. */
+MIST_MIE_FUNC void mist_mie_theta_grid(size_t n, double *mu)
+{
+    size_t j;
+    if (n == 0) return;
+    if (n == 1) { mu[0] = 1; return; }
+    for (j = 0; 2 * j < n; ++j) {
+        double u = 2 * j + 1 == n ? 0 : cos(MIST_MIE__PI * (double)j / (double)(n - 1));
+        mu[n - 1 - j] = -u;
+        mu[j] = u;                              /* the middle: +0 */
+    }
+    mu[0] = 1; mu[n - 1] = -1;
+}
+
+/* ======================================================================== */
+/* Water  [HQ73, Table I, 25 C]                                             */
+/* n + i k of pure liquid water from 350 to 800 nm every 25 nm, as printed  */
+/* (n to 3 decimals, k to 3 digits); linear interpolation in wavelength     */
+/* between the entries.  Outside [350, 800] nm the nearest end value is     */
+/* returned with status MIST_MIE_CLAMPED.  The index is relative to vacuum: */
+/* divide by the medium's (air 1.0003) for a relative m, as                 */
+/* mist_mie_average does.                                                   */
+/* ======================================================================== */
+
+/* Water's refractive index at vacuum wavelength lambda_nm (nanometres).
+ * Domain: [350, 800] nm (covers the visible 380-780); outside: clamped to
+ * the end value, *status = MIST_MIE_CLAMPED; NaN: returns (0, 0) (which
+ * every Mie function rejects) and *status = MIST_MIE_EDOMAIN; else
+ * *status = MIST_MIE_OK.  status may be NULL. */
+MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
+{
+    static const double n_hq[19] = {
+        1.343, 1.341, 1.339, 1.338, 1.337, 1.336, 1.335, 1.334, 1.333, 1.333,
+        1.332, 1.332, 1.331, 1.331, 1.331, 1.330, 1.330, 1.330, 1.329 };
+    static const double k_hq[19] = {
+        6.50e-9, 3.50e-9, 1.86e-9, 1.30e-9, 1.02e-9, 9.35e-10, 1.00e-9, 1.32e-9,
+        1.96e-9, 3.60e-9, 1.09e-8, 1.39e-8, 1.64e-8, 2.23e-8, 3.35e-8, 9.15e-8,
+        1.56e-7, 1.48e-7, 1.25e-7 };
+    int st = MIST_MIE_OK, i;
+    double t, f;
+    if (lambda_nm != lambda_nm) {
+        if (status) *status = MIST_MIE_EDOMAIN;
+        return mist_mie_cplx(0, 0);
+    }
+    if (lambda_nm < 350) { lambda_nm = 350; st = MIST_MIE_CLAMPED; }
+    if (lambda_nm > 800) { lambda_nm = 800; st = MIST_MIE_CLAMPED; }
+    if (status) *status = st;
+    t = (lambda_nm - 350) / 25;                /* in [0, 18] */
+    i = (int)t;
+    if (i > 17) i = 17;
+    f = t - i;
+    return mist_mie_cplx(n_hq[i] + f * (n_hq[i + 1] - n_hq[i]),
+                         k_hq[i] + f * (k_hq[i + 1] - k_hq[i]));
+}
+
+/* ======================================================================== */
+/* Size distributions                                                       */
+/* Number densities n(r) per unit radius (unnormalised; the average        */
+/* normalises numerically over the range it integrates):                    */
+/*  gamma [HT74 eq. 2.56]: n = r^((1-3v)/v) exp(-r / (r_eff v)), effective */
+/*    radius r_eff = <r^3>/<r^2> and effective variance v, 0 < v < 1/2.     */
+/*  modified gamma [D69]: n = r^alpha exp(-(alpha/gamma) (r/r_c)^gamma),    */
+/*    mode radius r_c; alpha, gamma > 0.  Deirmendjian's cloud C.1 is       */
+/*    alpha = 6, gamma = 1, r_c = 4 um.                                     */
+/*  lognormal: n = 1/r exp(-(ln r - ln r_g)^2 / (2 ln^2 sigma_g)), median   */
+/*    radius r_g, geometric standard deviation sigma_g > 1.                 */
+/*  table: given radii r_i > 0 and weights w_i >= 0 (n(r_i) times the       */
+/*    caller's quadrature weight).                                          */
+/* ======================================================================== */
+
+MIST_MIE_FUNC mist_mie_dist mist_mie__dist(int kind, double p1, double p2, double p3)
+{
+    mist_mie_dist d;
+    d.kind = kind; d.p1 = p1; d.p2 = p2; d.p3 = p3;
+    d.r_min = d.r_max = 0; d.n_radii = 0;
+    d.r = d.w = NULL; d.n = 0;
+    return d;
+}
+
+/* All particles of radius r > 0. */
+MIST_MIE_FUNC mist_mie_dist mist_mie_dist_mono(double r)
+{ return mist_mie__dist(MIST_MIE_DIST_MONO, r, 0, 0); }
+
+/* Gamma [HT74]: effective radius r_eff > 0, effective variance v_eff in
+ * (0, 1/2). */
+MIST_MIE_FUNC mist_mie_dist mist_mie_dist_gamma(double r_eff, double v_eff)
+{ return mist_mie__dist(MIST_MIE_DIST_GAMMA, r_eff, v_eff, 0); }
+
+/* Modified gamma [D69]: alpha > 0, gamma > 0, mode radius r_c > 0. */
+MIST_MIE_FUNC mist_mie_dist mist_mie_dist_modgamma(double alpha, double gamma, double r_c)
+{ return mist_mie__dist(MIST_MIE_DIST_MODGAMMA, alpha, gamma, r_c); }
+
+/* Lognormal: median radius r_g > 0, geometric standard deviation
+ * sigma_g > 1. */
+MIST_MIE_FUNC mist_mie_dist mist_mie_dist_lognormal(double r_g, double sigma_g)
+{ return mist_mie__dist(MIST_MIE_DIST_LOGNORMAL, r_g, sigma_g, 0); }
+
+/* Explicit nodes: radii r[i] > 0 and weights w[i] >= 0 (not all 0), i < n.
+ * The arrays must outlive the average call. */
+MIST_MIE_FUNC mist_mie_dist mist_mie_dist_table(const double *r, const double *w, size_t n)
+{
+    mist_mie_dist d = mist_mie__dist(MIST_MIE_DIST_TABLE, 0, 0, 0);
+    d.r = r; d.w = w; d.n = n;
+    return d;
+}
+
+MIST_MIE_FUNC int mist_mie__finite(double v) { return v - v == 0; }
+
+/* Checks the parameters and sets the integration variable t (r, or ln r
+ * for the lognormal: *logv) and its range [*t0, *t1]. */
+MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, double *t1,
+                                       int *logv)
+{
+    double a, b, lo, hi;
+    int autor = d->r_min == 0 && d->r_max == 0;
+    *logv = 0;
+    if (!autor && !(mist_mie__finite(d->r_min) && mist_mie__finite(d->r_max)
+                    && d->r_min >= 0 && d->r_max > d->r_min))
+        return 0;
+    switch (d->kind) {
+    case MIST_MIE_DIST_GAMMA:       /* alpha = (1-3v)/v, scale beta = r_eff v */
+        if (!(d->p1 > 0 && mist_mie__finite(d->p1) && d->p2 > 0 && d->p2 < 0.5)) return 0;
+        a = (1 - 3 * d->p2) / d->p2;  b = d->p1 * d->p2;
+        lo = a + 1 - 8 * sqrt(a + 1) - 16;         /* number: Gamma(alpha+1) */
+        hi = a + 3 + 8 * sqrt(a + 3) + 16;         /* area:   Gamma(alpha+3) */
+        *t0 = lo > 0 ? lo * b : 0;  *t1 = hi * b;
+        break;
+    case MIST_MIE_DIST_MODGAMMA: {  /* t = B r^gamma, B = alpha/(gamma r_c^gamma) */
+        double g = d->p2, bb, s0, s1;
+        if (!(d->p1 > 0 && mist_mie__finite(d->p1) && g > 0 && mist_mie__finite(g)
+              && d->p3 > 0 && mist_mie__finite(d->p3))) return 0;
+        bb = d->p1 / g;                             /* B r_c^gamma */
+        s0 = (d->p1 + 1) / g;  s1 = (d->p1 + 3) / g;
+        lo = s0 - 8 * sqrt(s0) - 16;  hi = s1 + 8 * sqrt(s1) + 16;
+        *t0 = lo > 0 ? d->p3 * pow(lo / bb, 1 / g) : 0;
+        *t1 = d->p3 * pow(hi / bb, 1 / g);
+        if (!mist_mie__finite(*t1)) return 0;
+        break;
+    }
+    case MIST_MIE_DIST_LOGNORMAL: { /* in ln r: Gaussian (mu, s) */
+        double mu = log(d->p1), s;
+        if (!(d->p1 > 0 && mist_mie__finite(d->p1) && d->p2 > 1 && mist_mie__finite(d->p2)))
+            return 0;
+        s = log(d->p2);
+        *logv = 1;
+        *t0 = mu - 7 * s;  *t1 = mu + 2 * s * s + 7 * s;
+        if (!autor) {
+            if (!(d->r_min > 0)) return 0;
+            *t0 = log(d->r_min); *t1 = log(d->r_max);
+        }
+        return mist_mie__finite(*t0) && mist_mie__finite(*t1) && *t1 > *t0;
+    }
+    default:
+        return 0;
+    }
+    if (!autor) { *t0 = d->r_min; *t1 = d->r_max; }
+    return mist_mie__finite(*t0) && mist_mie__finite(*t1) && *t1 > *t0;
+}
+
+/* Density in the integration variable at t (r = t, or e^t), relative to
+ * its peak (so it never overflows); 0 at r = 0. */
+MIST_MIE_FUNC double mist_mie__dist_density(const mist_mie_dist *d, double t)
+{
+    double r = t, e;
+    switch (d->kind) {
+    case MIST_MIE_DIST_GAMMA: {
+        double a = (1 - 3 * d->p2) / d->p2, b = d->p1 * d->p2;
+        double rm = b * (a > 0 ? a : 1);           /* the mode, if any */
+        if (!(r > 0)) return 0;
+        e = a * log(r / rm) - (r - rm) / b;        /* log n(r) / n(rm) */
+        return exp(e);
+    }
+    case MIST_MIE_DIST_MODGAMMA: {
+        double al = d->p1, g = d->p2, q;
+        if (!(r > 0)) return 0;
+        q = r / d->p3;
+        e = al * log(q) - al / g * (pow(q, g) - 1);
+        return exp(e);
+    }
+    case MIST_MIE_DIST_LOGNORMAL: {
+        double s = log(d->p2), y = (t - log(d->p1)) / s;
+        return exp(-0.5 * y * y);
+    }
+    default:
+        return 0;
+    }
+}
+
+/* ======================================================================== */
+/* Averages over sizes and wavelengths  [W79 "Integrating over sizes",      */
+/* HT74 sec. 2]                                                             */
+/* Cross sections and intensities add, not efficiencies or normalised      */
+/* phase functions:                                                         */
+/*   <C>   = sum_l w_l sum_i w_i C(r_i, l) / (sum_l w_l sum_i w_i)          */
+/*   p(mu) = sum w_l w_i (|S1|^2 + |S2|^2) / (2 k_l^2)  /  sum w_l w_i C_sca */
+/*   g     = sum w_l w_i g C_sca / sum w_l w_i C_sca                        */
+/* with C = Q pi r^2, k_l = 2 pi n_medium / lambda_l, x = k_l r,            */
+/* m = m_l / n_medium.  p integrates to 1 over the sphere for any nodes.    */
+/* The size integral is composite 8-point Gauss-Legendre over [r_min,       */
+/* r_max] in r (gamma laws) or ln r (lognormal).  Automatic range: the      */
+/* number and the area (r^2) weighted laws both lose < 1e-9 of their mass  */
+/* (gamma: mean +- 8 sd + 16 of the Gamma(alpha+1) / Gamma(alpha+3) law of  */
+/* t; lognormal: ln r_g - 7 s .. ln r_g + 2 s^2 + 7 s).                     */
+/* Automatic nodes: spacing <= 0.05 in size parameter at the shortest       */
+/* wavelength (at r_max), at least 64, at most 65536.  Coarser sampling     */
+/* aliases the ripple of Q(x) (water, gamma r_eff = 2 um, v = 0.1, 550 nm:  */
+/* C_sca off by 3e-3 at spacing 0.25).  With some absorption (Im m = 1e-3)  */
+/* the automatic nodes give ~5e-6.  Nearly absorption-free droplets (water  */
+/* in the visible, Im m ~ 1e-9) have resonances far narrower than any node  */
+/* spacing, and a node that lands on one overweights it: expect noise of    */
+/* ~1e-3 relative in such averages whatever n_radii (the water example:     */
+/* +-4e-4 as n_radii goes from 2000 to 2600).  A smooth phase table may     */
+/* need far fewer nodes: set n_radii.                                       */
+/* Cost: n_radii x n_wl spheres, each with an O(N n_mu) angle sum (paired   */
+/* angles count once; ~3 ns per term and angle pair at -O2, ~0.7 ns with    */
+/* -O3 -march=native).  Example, gamma r_eff = 5 um, v = 0.1, 3 wavelengths,*/
+/* 1800 angles: 7168 automatic nodes 10 s (2.6 s native); n_radii = 800:   */
+/* 1 s, C_ext within 3e-4 and g within 2e-4 of the automatic result.        */
+/* ======================================================================== */
+
+MIST_MIE_FUNC mist_mie_avg mist_mie__avg_zero(int status)
+{
+    mist_mie_avg a;
+    a.status = status;
+    a.c_ext = a.c_sca = a.c_abs = a.c_back = a.g = a.albedo = 0;
+    a.area = a.volume = a.r_min = a.r_max = 0;
+    a.n_radii = 0;
+    return a;
+}
+
+/* Node i of the size quadrature: radius *r and weight *w (density times
+ * quadrature weight). */
+MIST_MIE_FUNC void mist_mie__node(const mist_mie_dist *d, int logv, double t0, double h,
+                                  size_t i, double *r, double *w)
+{
+    static const double gx[4] = {       /* 8-point Gauss-Legendre, x >= 0 */
+        0.1834346424956498049394761, 0.5255324099163289858177390,
+        0.7966664774136267395915539, 0.9602898564975362316835609 };
+    static const double gw[4] = {
+        0.3626837833783619829651504, 0.3137066458778872873379622,
+        0.2223810344533744705443560, 0.1012285362903762591525314 };
+    size_t panel = i / 8, j = i % 8;
+    double c = t0 + h * ((double)panel + 0.5), xi, wi, t;
+    if (d->kind == MIST_MIE_DIST_MONO) { *r = d->p1; *w = 1; return; }
+    if (d->kind == MIST_MIE_DIST_TABLE) { *r = d->r[i]; *w = d->w[i]; return; }
+    xi = gx[j < 4 ? 3 - j : j - 4] * (j < 4 ? -1 : 1);
+    wi = gw[j < 4 ? 3 - j : j - 4];
+    t = c + 0.5 * h * xi;
+    *r = logv ? exp(t) : t;
+    *w = 0.5 * h * wi * mist_mie__dist_density(d, t);
+}
+
+/* The size- and wavelength-averaged optics of a droplet population.
+ *   dist     the size distribution (see mist_mie_dist_*; its r_min, r_max,
+ *            n_radii may be set, see there); radii in any length unit;
+ *   wl[n_wl] wavelengths in the same unit, weights and particle indices;
+ *   n_medium the medium's real refractive index (> 0; 1 for vacuum);
+ *   mu[n_mu] cosines for the phase table (any; pairs mu[n-1-j] = -mu[j]
+ *            cost one evaluation), phase[n_mu] receives p(mu) per sr.
+ *            mu/phase may be NULL with n_mu = 0.
+ * Domain: every parameter as documented, n_wl >= 1, weights finite >= 0
+ * with a positive sum, every x = 2 pi n_medium r / lambda and m / n_medium
+ * in the sphere's domain; else status MIST_MIE_EDOMAIN, every number 0 and
+ * phase[] zeroed.  Allocates one workspace (malloc, for the largest x);
+ * failure: MIST_MIE_ENOMEM.  Nodes with zero weight are skipped. */
+MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
+                                            const mist_mie_wavelength *wl, size_t n_wl,
+                                            double n_medium,
+                                            const double *mu, size_t n_mu, double *phase)
+{
+    mist_mie_avg a = mist_mie__avg_zero(MIST_MIE_OK);
+    double t0 = 0, t1 = 0, h = 0, lmin = 0, wsum_l = 0, rmax = 0, xmax;
+    double sw = 0, cext = 0, csca = 0, cabs = 0, cback = 0, gs = 0, area = 0, vol = 0;
+    size_t nodes = 1, i, l, nwork;
+    int logv = 0, ok = 1;
+    double *work;
+
+    if (phase) for (i = 0; i < n_mu; ++i) phase[i] = 0;
+    if (!dist || !wl || n_wl == 0 || !(n_medium > 0 && mist_mie__finite(n_medium))
+        || (n_mu > 0 && (!mu || !phase)))
+        return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+    for (l = 0; l < n_wl; ++l) {
+        int pec;
+        double lam = wl[l].lambda;
+        if (!(lam > 0 && mist_mie__finite(lam) && wl[l].weight >= 0
+              && mist_mie__finite(wl[l].weight)))
+            return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        if (!mist_mie__valid(1e-3, mist_mie_cplx(wl[l].m.re / n_medium,
+                                                 wl[l].m.im / n_medium), &pec))
+            return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        if (l == 0 || lam < lmin) lmin = lam;
+        wsum_l += wl[l].weight;
+    }
+    if (!(wsum_l > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+
+    /* the nodes */
+    switch (dist->kind) {
+    case MIST_MIE_DIST_MONO:
+        if (!(dist->p1 > 0 && mist_mie__finite(dist->p1)))
+            return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        rmax = dist->p1;
+        a.r_min = a.r_max = rmax;
+        break;
+    case MIST_MIE_DIST_TABLE: {
+        double ws = 0;
+        if (!dist->r || !dist->w || dist->n == 0) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        for (i = 0; i < dist->n; ++i) {
+            if (!(dist->r[i] > 0 && mist_mie__finite(dist->r[i]) && dist->w[i] >= 0
+                  && mist_mie__finite(dist->w[i])))
+                return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+            if (dist->r[i] > rmax) rmax = dist->r[i];
+            if (i == 0 || dist->r[i] < a.r_min) a.r_min = dist->r[i];
+            ws += dist->w[i];
+        }
+        if (!(ws > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        nodes = dist->n;
+        a.r_max = rmax;
+        break;
+    }
+    default: {
+        double r0, span;
+        if (!mist_mie__dist_range(dist, &t0, &t1, &logv) || dist->n_radii < 0)
+            return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        rmax = logv ? exp(t1) : t1;
+        r0 = logv ? exp(t0) : t0;
+        if (dist->n_radii > 0) nodes = (size_t)dist->n_radii;
+        else {
+            /* size-parameter spacing <= 0.05 at the top of the range */
+            span = 2 * MIST_MIE__PI * n_medium / lmin * (logv ? rmax * (t1 - t0) : rmax - r0);
+            span = span / 0.05;
+            nodes = span < 64 ? 64 : (span > 65536 ? 65536 : (size_t)span + 1);
+        }
+        nodes = (nodes + 7) / 8 * 8;
+        h = (t1 - t0) / (double)(nodes / 8);
+        a.r_min = r0; a.r_max = rmax;
+    }
+    }
+    a.n_radii = (int)nodes;
+
+    xmax = 2 * MIST_MIE__PI * n_medium * rmax / lmin;
+    nwork = mist_mie_workspace_size(xmax);
+    if (nwork == 0) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+    work = (double *)malloc(nwork * sizeof(double));
+    if (!work) return mist_mie__avg_zero(MIST_MIE_ENOMEM);
+
+    for (i = 0; i < nodes && ok; ++i) {
+        double r, w, r2;
+        mist_mie__node(dist, logv, t0, h, i, &r, &w);
+        if (!(w > 0)) continue;
+        r2 = MIST_MIE__PI * r * r;
+        sw += w * wsum_l;
+        area += w * wsum_l * r2;
+        vol += w * wsum_l * (4.0 / 3) * r2 * r;
+        for (l = 0; l < n_wl; ++l) {
+            double k = 2 * MIST_MIE__PI * n_medium / wl[l].lambda, ww = w * wl[l].weight;
+            mist_mie_sphere s;
+            if (!(ww > 0)) continue;
+            s = mist_mie_sphere_make(k * r, mist_mie_cplx(wl[l].m.re / n_medium,
+                                                          wl[l].m.im / n_medium), work, nwork);
+            if (s.status != MIST_MIE_OK) { ok = 0; a.status = s.status; break; }
+            cext += ww * s.q_ext * r2;
+            csca += ww * s.q_sca * r2;
+            cabs += ww * s.q_abs * r2;
+            cback += ww * s.q_back * r2;
+            gs += ww * s.g * s.q_sca * r2;
+            if (n_mu > 0)
+                mist_mie__table(&s, mu, n_mu,
+                                ww * s.amp_scale_ * s.amp_scale_ / (2 * k * k), 1, phase);
+        }
+    }
+    free(work);
+    if (!ok || !(sw > 0)) {
+        int st = ok ? MIST_MIE_EDOMAIN : a.status;
+        if (phase) for (i = 0; i < n_mu; ++i) phase[i] = 0;
+        return mist_mie__avg_zero(st);
+    }
+    for (i = 0; i < n_mu; ++i) phase[i] = csca > 0 ? phase[i] / csca : 0;
+    a.c_ext = cext / sw;
+    a.c_sca = csca / sw;
+    a.c_abs = cabs / sw;
+    a.c_back = cback / sw;
+    a.g = csca > 0 ? gs / csca : 0;
+    a.albedo = cext > 0 ? csca / cext : 0;
+    a.area = area / sw;
+    a.volume = vol / sw;
+    return a;
+}
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MIST_MIE_H */
