@@ -36,29 +36,19 @@ int main(int argc, char **argv)
     static const double ds[] = { 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 1.5, 2, 3, 5, 7, 10,
                                  15, 20, 30, 50 };
     int n_radii = argc > 1 ? atoi(argv[1]) : 200;
-    double ref[NTH], p[NTH], q[NTH], h[NTH];
     size_t k;
-    int i;
     fitref_grid();
     printf("| d (um) | Mie g | fit L1 | fit logRMS | printed eq. 8, 10: L1 | logRMS "
            "| HG(g_Mie) L1 | logRMS |\n|---|---|---|---|---|---|---|---|\n");
     for (k = 0; k < sizeof ds / sizeof *ds; ++k) {
-        double d = ds[k], g = fitref_mie(d, ref, n_radii), l1, lr, l1p, lrp, l1h, lrh;
-        mist_fog f = mist_fog_from_diameter(d), fp = fog_printed(d);
-        for (i = 0; i < NTH; ++i) {
-            p[i] = mist_fog_eval(f, mu[i]);
-            q[i] = mist_fog_eval(fp, mu[i]);
-            h[i] = mist_hg_eval(g, mu[i]);
-        }
-        fitref_errors(p, ref, &l1, &lr);
-        fitref_errors(h, ref, &l1h, &lrh);
-        if (d >= 5) {
-            fitref_errors(q, ref, &l1p, &lrp);
-            printf("| %g | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, g, l1, lr,
-                   l1p, lrp, l1h, lrh);
-        } else {
-            printf("| %g | %.4f | %.3f | %.3f | | | %.3f | %.3f |\n", d, g, l1, lr, l1h, lrh);
-        }
+        double d = ds[k];
+        fitref_row r = fitref_compare(d, n_radii);
+        if (d >= 5)
+            printf("| %g | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, r.g, r.l1,
+                   r.lr, r.l1p, r.lrp, r.l1h, r.lrh);
+        else
+            printf("| %g | %.4f | %.3f | %.3f | | | %.3f | %.3f |\n", d, r.g, r.l1, r.lr,
+                   r.l1h, r.lrh);
         fflush(stdout);
     }
     return 0;

@@ -66,25 +66,16 @@ static void jump(mist_fog a, mist_fog b, double *l1, double *dlog)
 static void test_reading(void)
 {
     static const double ds[] = { 5, 10, 20, 50 };
-    static double ref[NTH], p[NTH], q[NTH], h[NTH];
     size_t k;
-    int i;
     fitref_grid();
     for (k = 0; k < sizeof ds / sizeof *ds; ++k) {
-        double d = ds[k], g = fitref_mie(d, ref, 150), l1, lr, l1p, lrp, l1h, lrh;
-        mist_fog f = mist_fog_from_diameter(d), fp = fog_printed(d);
-        for (i = 0; i < NTH; ++i) {
-            p[i] = mist_fog_eval(f, mu[i]);
-            q[i] = mist_fog_eval(fp, mu[i]);
-            h[i] = mist_hg_eval(g, mu[i]);
-        }
-        fitref_errors(p, ref, &l1, &lr);
-        fitref_errors(q, ref, &l1p, &lrp);
-        fitref_errors(h, ref, &l1h, &lrh);
+        double d = ds[k];
+        fitref_row r = fitref_compare(d, 150);
         printf("d = %g um vs Mie: mist's reading L1 %.3f logRMS %.3f; printed L1 %.3f "
-               "logRMS %.3f; HG(g_Mie) L1 %.3f logRMS %.3f\n", d, l1, lr, l1p, lrp, l1h, lrh);
-        mt_check(l1 < l1p && lr < lrp, "d = %g: the inside reading is closer to Mie", d);
-        mt_check(l1 < l1h && lr < lrh, "d = %g: the fit beats HG(g_Mie)", d);
+               "logRMS %.3f; HG(g_Mie) L1 %.3f logRMS %.3f\n", d, r.l1, r.lr, r.l1p, r.lrp,
+               r.l1h, r.lrh);
+        mt_check(r.l1 < r.l1p && r.lr < r.lrp, "d = %g: the inside reading is closer to Mie", d);
+        mt_check(r.l1 < r.l1h && r.lr < r.lrh, "d = %g: the fit beats HG(g_Mie)", d);
     }
 }
 
