@@ -1,7 +1,8 @@
 #!/bin/sh
 # run.sh SOURCE WORK: install mist into WORK/prefix, then build and run the
 # consumer (tests/consumer) against it with find_package, with pkg-config
-# (skipped with a message if pkg-config is absent), and with add_subdirectory.
+# (skipped with a message if pkg-config is absent), with add_subdirectory and
+# with FetchContent.
 set -e
 src=$1; work=$2
 rm -rf "$work"; mkdir -p "$work"
@@ -15,9 +16,11 @@ cmake -S "$src/tests/consumer" -B "$work/pkg" -DMODE=package \
 cmake --build "$work/pkg" >/dev/null
 "$work/pkg/consumer"
 
-cmake -S "$src/tests/consumer" -B "$work/sub" -DMODE=subdir -DMIST_SOURCE="$src" >/dev/null
-cmake --build "$work/sub" >/dev/null
-"$work/sub/consumer"
+for mode in subdir fetch; do
+    cmake -S "$src/tests/consumer" -B "$work/$mode" -DMODE=$mode -DMIST_SOURCE="$src" >/dev/null
+    cmake --build "$work/$mode" >/dev/null
+    "$work/$mode/consumer"
+done
 
 if command -v pkg-config >/dev/null 2>&1; then
     PKG_CONFIG_PATH="$work/prefix/share/pkgconfig" pkg-config --cflags --libs mist
@@ -28,4 +31,4 @@ if command -v pkg-config >/dev/null 2>&1; then
 else
     echo "pkg-config not found: its part skipped"
 fi
-echo "consumer: 3 builds passed"
+echo "consumer: all builds passed"
