@@ -532,6 +532,7 @@ MIST__F int MIST__FN(mist__draine_polish)(MIST__T g, MIST__T alpha, MIST__T x,
                                           int n, MIST__T *u)
 {
     MIST__W gw = g, uw = *u, c0w, c1w, cnw, fw, rw, sw, kw, tol, tw = 0;
+    MIST__W lo = -1, hi = 1, un;
     int it, have0 = 0;
     MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
     cnw = c0w + c1w * (1 + 2 * gw * gw) / 3;
@@ -545,6 +546,7 @@ MIST__F int MIST__FN(mist__draine_polish)(MIST__T g, MIST__T alpha, MIST__T x,
         } else {
             rw = MIST__WFN(mist__draine_lo)(gw, c0w, c1w, cnw, uw, &fw) - x;
         }
+        if (rw > 0) hi = uw; else if (rw < 0) lo = uw; else break;
         if (!(fw > 0)) return 0;
         sw = rw / fw;
         /* Newton's next step is ~ |f'/(2f)| s^2, with f'/f = 3g/V^2 +
@@ -552,8 +554,12 @@ MIST__F int MIST__FN(mist__draine_polish)(MIST__T g, MIST__T alpha, MIST__T x,
          * good start costs one evaluation */
         kw = 3 * gw / MIST__WFN(mist__v2)(gw, uw)
            + 2 * c1w * uw / (c0w + c1w * uw * uw);
-        uw -= sw;
-        uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);
+        un = uw - sw;
+        if (!(un >= lo && un <= hi)) {         /* left the bracket: bisect */
+            uw = (lo + hi) / 2;
+            continue;
+        }
+        uw = un;
         sw = sw < 0 ? -sw : sw;
         kw = kw < 0 ? -kw : kw;
         tol = MIST__EPS / 64 * ((uw < 0 ? -uw : uw) + x / fw);
@@ -563,7 +569,7 @@ MIST__F int MIST__FN(mist__draine_polish)(MIST__T g, MIST__T alpha, MIST__T x,
         }
     }
     *u = (MIST__T)uw;
-    return 0;
+    return it < n;                              /* exact hit (r = 0) */
 }
 #endif
 
@@ -603,19 +609,20 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha,
         if (f > MIST__C(0)) {                   /* a Newton step */
             r /= f;
             un = u - r;
-            if ((r < MIST__C(0) ? -r : r)       /* within T's noise: done */
-                <= MIST__C(16) * MIST__EPS * ((u < MIST__C(0) ? -u : u) + x / f)) {
-                if (un >= lo && un <= hi) u = un;
-                break;
+            if (un >= lo && un <= hi) {
+                u = un;
+                if ((r < MIST__C(0) ? -r : r)   /* within T's noise: done */
+                    <= MIST__C(16) * MIST__EPS * ((u < MIST__C(0) ? -u : u) + x / f))
+                    break;
+                continue;
             }
-            if (un > lo && un < hi) { u = un; continue; }
         }
         un = MIST__C(0.5) * (lo + hi);          /* else bisection */
         if (un == lo || un == hi) break;        /* bracket is 1 ulp */
         u = un;
     }
 #ifdef MIST__W
-    MIST__FN(mist__draine_polish)(g, alpha, x, 4, &u);
+    MIST__FN(mist__draine_polish)(g, alpha, x, MIST__MAXIT, &u);
 #else
     (void)alpha;
 #endif
@@ -852,7 +859,111 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* ======================================================================== */
 /* Analytic height fog [I18]                                                */
 /*                                                                          */
-/* PLACEHOLDER                                                              */
+/* [I18] K. Ishiyama, "An analytic height fog model for real-time           */
+/*       rendering", 2018 (../shared/references/ishiyama-2018-analytic-     */
+/*       height-fog.txt).                                                   */
+/* [B08] A. Bouthors, F. Neyret, N. Max, E. Bruneton, C. Crassin,           */
+/*       "Interactive multiple anisotropic scattering in clouds", I3D 2008. */
+/*                                                                          */
+/* MODEL [I18 eq. 7-13].  Height is the y coordinate.  A component's        */
+/* (Rayleigh's, Mie's) extinction at height y is its coefficient times      */
+/* rho(y) = density exp(-(y - base)/H), and so is its scattering.  Light:   */
+/* a sun at infinity (irradiance E, direction l towards it) and an          */
+/* isotropic ambient radiance La.  Along x(t) = origin + t dir, 0 <= t <= s */
+/* (s may be +inf), with w = dir.y, st = sum of the extinctions:            */
+/*   T = exp(-st C(s)),   C(t) = int_0^t rho(y(t')) dt'  (mist_hfog_column) */
+/*   L = sum_j ss_j (p_j(u) E + La) int_0^s rho exp(-st C(t)) dt            */
+/* with p_j mist's densities per steradian (Rayleigh; the Mie mist_fog) at  */
+/* u = l . dir, the cosine between the sun's propagation direction and the */
+/* light's towards the camera: g > 0 brightens looking at the sun.  A      */
+/* surface or sky of radiance B seen along the ray becomes B T + L.        */
+/*                                                                          */
+/* REFORMULATION.  The printed closed forms [I18 eq. 14, 21-23] divide by  */
+/* omega_y (0 for a level ray) and by st (0 without fog), and take          */
+/* e^(-y0/H) and e^(-omega_y s/H) apart: each overflows, or the difference */
+/* of the two cancels, for a camera far below or above the fog, a long ray */
+/* down, or a ray to infinity.  mist writes them as                         */
+/*   C(s) = density e^(-h_low) s phi1(|a|),  a = w s / H,                   */
+/*   h_low = (y - base)/H + min(a, 0): the LOWER end of the ray, its        */
+/*          densest point, so that every other factor is <= 1;              */
+/*   phi1(z) = (1 - e^-z)/z = -expm1(-z)/z, phi1(0) = 1: level rays exact; */
+/*   int_0^s rho e^(-st C) dt = C phi1(st C)  (= (1 - T)/st, no division by */
+/*          st: zero extinction gives T = 1 and no in-scatter, not NaN);    */
+/* h_low is carried in two parts (error-free transformations of y - base,  */
+/* of w s and of the quotients by H) and combined before the one exp is     */
+/* taken (in two halves where one alone would leave the range).  So the    */
+/* rounding of the exponent itself (|h| eps: 700 eps at e^700) never        */
+/* enters, and a finite input whose result is representable gets it to a   */
+/* few ulps.  Rays to infinity: up, C = density e^(-h) H / w; level or     */
+/* down, C = +inf, T = 0, L = its limit.  Measured against adaptive         */
+/* quadrature of eq. 12-13 (tests/test_height_fog.c) over omega_y in {0,    */
+/* +-1e-12, +-1e-6, +-1e-3, +-0.5, +-1}, density factors e^-700..e^700      */
+/* (float: e^-80..e^80), lengths 0..inf, extinction 0..3000, H 1..1e4: the  */
+/* relative error of T and L stays below 5 eps (1 + tau) in double and     */
+/* in float (the test's bar is 16).                                         */
+/*                                                                          */
+/* THE DIMMED SUN (sun_extinction != 0; beyond [I18]).  The sun reaches     */
+/* y(t) through the column above it along l, rho(t) H / l_y (l_y > 0; a sun */
+/* at or below the horizon gives no sun light).  With A(t) = st (C(t) +     */
+/* rho(t) H / l_y), dA/dt = st rho (1 - w / l_y) = nu st rho, so the sun's  */
+/* integral  int_0^s rho e^(-A) dt  is closed form too:                     */
+/*   = e^(-min(A0, A1)) C(s) phi1(|nu| st C(s)),                            */
+/*   A0 = st rho(0) H / l_y,  A1 = st C(s) + st rho(s) H / l_y,             */
+/* the less lit end as reference (all exponents <= 0).  nu = (l_y - w)/l_y */
+/* is exact near 0; at nu = 0 (view and sun at the same vertical component) */
+/* phi1's argument is 0 and nothing divides by nu.  Measured: below 5 eps   */
+/* (1 + tau + min(A0, A1)) in double and float, nu = 0, +-2^-45 (double),   */
+/* +-2^-20 (float) and down to -19 included.                                */
+/*                                                                          */
+/* SEVERAL LAYERS (mist_hfog_layers_eval): different scale heights, as      */
+/* Rayleigh ~8 km and Mie ~1.2 km, or artist layers.  The transmittance is  */
+/* the product of the layers' (exact, as above).  The in-scatter has no     */
+/* closed form: mist cuts the ray into pieces (equal steps of the square    */
+/* root of the transmittance) and on each takes every layer's share         */
+/* f_i = ext_i rho_i / sum_k ext_k rho_k of the extinction as constant,     */
+/* equal to its column-weighted mean.  Then each piece is closed form, and  */
+/* exact when the layers share a scale height (one exponential: [I18]).     */
+/* The bound: on a piece, the in-scatter is int F g dtau with F = sum_i c_i */
+/* f_i (c_i = layer i's scattering x light / extinction) and g = e^-tau     */
+/* (e^-A for the dimmed sun); replacing F by its mean errs by at most       */
+/* osc(F) min(int g, dtau/4 osc(g)) (Gruss' inequality), and osc(F) <=     */
+/* (max c - min c)/2 sum_i osc(f_i), the f_i bounded from the layers'       */
+/* density ratios, monotone along the ray.  The bound (rounding included)  */
+/* falls as 1/pieces^2.  Measured (Earth-like and three artist layers, 8    */
+/* pieces): median 1e-4 of the value, 90% below 1.2%, worst 20% (a ray     */
+/* rising 1 m per km to infinity); the actual error never above 0.95 of    */
+/* the bound.                                                               */
+/*                                                                          */
+/* A RAY-MARCHING STEP (mist_segment_linear; [B08] integrates single        */
+/* scattering per piecewise-linear segment).  Over a step of length len    */
+/* the extinction is linear from k0 to k1 and the source (scattering x      */
+/* phase x incident light) linear from s0 to s1:                            */
+/*   L = len (s0 W0 + s1 W1),  W0 = int_0^1 (1-t) e^-tau,  W1 = int t e^-tau, */
+/*   tau(t) = p t + b t^2,  p = k0 len,  b = (k1 - k0) len / 2.             */
+/* Completing the square gives erfcx (b > 0, extinction rising) or Dawson's */
+/* integral F (b < 0); M1 = int t e^-tau follows from 1 - e^-tau(1) - p M0, */
+/* which cancels, so mist evaluates it through G(x) = 1 - sqrt(pi) x        */
+/* erfcx(x) and K(y) = 2 y F(y) - 1, both small and computed directly       */
+/* (piecewise Chebyshev series fitted to 50 digits, asymptotic series      */
+/* beyond 8).  What remains loses at most 1.5 bits once tau(1) > 2 (the two */
+/* terms differ by e^-tau(1)); below, where the extinction goes to 0, the   */
+/* integrands are entire and small and a 16-point Gauss-Legendre rule is    */
+/* exact to 1e-20 (no extinction: the trapezoid rule, exactly).  Measured   */
+/* against quadrature: below 10 eps in double and float.                    */
+/*                                                                          */
+/* DOMAIN AND BAD INPUT (tested)                                            */
+/*   fog NULL; density NaN or <= 0; scale_height NaN or <= 0; base or       */
+/*       origin.y not finite; length NaN or <= 0: no fog (T = 1, L = 0,     */
+/*       column 0).  scale_height +inf: uniform fog.  length +inf: allowed. */
+/*   coefficients, sun, ambient: NaN and negative count as 0, +inf as the   */
+/*       largest finite value; an extinction below its scattering is raised */
+/*       to it (albedo <= 1).                                               */
+/*   dir, sun_dir: used as given when unit to rounding, else normalised (a  */
+/*       zero, NaN or infinite vector is (0, 0, 1): level).                 */
+/*   layers: NULL or n < 1: no fog; a bad layer is left out; at most        */
+/*       MIST_HFOG_MAX_LAYERS (8) are used; pieces <= 0: 8, at most 64.     */
+/*   Finite input never gives NaN: T in [0, 1], L >= 0, bound >= 0 (+inf   */
+/*       where the bound itself leaves the range).                          */
 /* ======================================================================== */
 
 #define MIST__RGB   MIST__FN(mist_rgb)
@@ -993,7 +1104,9 @@ MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
 MIST__F MIST__T MIST__FN(mist_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIST__T w,
                                            MIST__T length)
 {
-    MIST__T d0 = MIST__FN(mist__pos)(fog->density), H = fog->scale_height;
+    MIST__T d0, H;
+    if (!fog) return MIST__C(0);
+    d0 = MIST__FN(mist__pos)(fog->density); H = fog->scale_height;
     if (!(d0 > MIST__C(0) && H > MIST__C(0) && length > MIST__C(0) && w == w
           && MIST__FN(mist__finite)(fog->base) && MIST__FN(mist__finite)(y)))
         return MIST__C(0);
@@ -1010,12 +1123,13 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
                                       MIST__RGB *inscatter)
 {
     MIST__T tr[3], ls[3], st[3], sR[3], sM[3], E[3], La[3], ex[3];
-    MIST__T d0 = MIST__FN(mist__pos)(fog->density), H = fog->scale_height, w = 0;
+    MIST__T d0 = fog ? MIST__FN(mist__pos)(fog->density) : MIST__C(0);
+    MIST__T H = fog ? fog->scale_height : MIST__C(0), w = 0;
     MIST__T pR = 0, pM = 0, ly = 0, nu = 0, anu = 0;
     MIST__HRAY ray;
     int c, fogged;
     for (c = 0; c < 3; ++c) { tr[c] = MIST__C(1); ls[c] = MIST__C(0); }
-    fogged = d0 > MIST__C(0) && H > MIST__C(0) && length > MIST__C(0)
+    fogged = fog && d0 > MIST__C(0) && H > MIST__C(0) && length > MIST__C(0)
           && MIST__FN(mist__finite)(fog->base) && MIST__FN(mist__finite)(origin.y);
     if (fogged) {
         MIST__V3 v = MIST__FN(mist__unit)(dir);
@@ -1120,6 +1234,519 @@ MIST__F MIST__RGB MIST__FN(mist_hfog_apply)(const MIST__HFOG *fog, MIST__V3 orig
     l.b += background.b * t.b;
     return l;
 }
+
+/* ------------------------------------------------------------------------ */
+/* Several layers (different scale heights)                                 */
+/* ------------------------------------------------------------------------ */
+
+/* Sanitised layer k for channel c (see mist_hfog_eval): returns 0 when the
+ * layer is absent. */
+MIST__F int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST__T *sM,
+                                    MIST__T *st)
+{
+    MIST__T r, m, er, em;
+    r  = c == 0 ? f->rayleigh_scat.r : (c == 1 ? f->rayleigh_scat.g : f->rayleigh_scat.b);
+    m  = c == 0 ? f->mie_scat.r      : (c == 1 ? f->mie_scat.g      : f->mie_scat.b);
+    er = c == 0 ? f->rayleigh_ext.r  : (c == 1 ? f->rayleigh_ext.g  : f->rayleigh_ext.b);
+    em = c == 0 ? f->mie_ext.r       : (c == 1 ? f->mie_ext.g       : f->mie_ext.b);
+    *sR = MIST__FN(mist__pos)(r); *sM = MIST__FN(mist__pos)(m);
+    er = MIST__FN(mist__pos)(er); em = MIST__FN(mist__pos)(em);
+    er = er > *sR ? er : *sR;     em = em > *sM ? em : *sM;
+    *st = MIST__FN(mist__pos)(er + em);
+    return MIST__FN(mist__pos)(f->density) > MIST__C(0) && f->scale_height > MIST__C(0)
+        && MIST__FN(mist__finite)(f->base);
+}
+
+#ifndef MIST_HFOG_MAX_LAYERS
+#  define MIST_HFOG_MAX_LAYERS 8
+#endif
+
+/* Several exponential layers along one ray: see the section comment.
+ * Layer k contributes its own coefficients, scale height and Mie phase
+ * function; the lights (sun, ambient, sun_extinction) are those of
+ * layers[0].  At most MIST_HFOG_MAX_LAYERS layers are used.  `pieces` is
+ * the number of pieces the ray is cut into for the in-scatter (<= 0: 8; at
+ * most 64).  The transmittance is exact (closed form); the in-scatter is
+ * within *bound of the exact value (per channel, rounding included); any
+ * output pointer may be NULL. */
+MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MIST__V3 origin,
+                                             MIST__V3 dir, MIST__T length, int pieces,
+                                             MIST__RGB *transmittance, MIST__RGB *inscatter,
+                                             MIST__RGB *bound)
+{
+    MIST__T st[MIST_HFOG_MAX_LAYERS][3], sR[MIST_HFOG_MAX_LAYERS][3], sM[MIST_HFOG_MAX_LAYERS][3];
+    MIST__T H[MIST_HFOG_MAX_LAYERS], d0[MIST_HFOG_MAX_LAYERS], pM[MIST_HFOG_MAX_LAYERS];
+    MIST__T lnd[MIST_HFOG_MAX_LAYERS];
+    MIST__HRAY seg[MIST_HFOG_MAX_LAYERS];
+    MIST__T tau[3], tr[3], ls[3], bd[3], E[3], La[3], tb[65];
+    MIST__T w = 0, y = origin.y, s = length, pR = 0, ly = 0, nu = 0, anu = 0;
+    int ok[MIST_HFOG_MAX_LAYERS], k, i, c, j, np = 0, cs = 0, same = 1, sunx = 0;
+    MIST__V3 v;
+    for (c = 0; c < 3; ++c) { tau[c] = MIST__C(0); tr[c] = MIST__C(1); ls[c] = bd[c] = MIST__C(0); }
+    if (!layers || n < 1 || !(s > MIST__C(0)) || !MIST__FN(mist__finite)(y)) goto out;
+    if (n > MIST_HFOG_MAX_LAYERS) n = MIST_HFOG_MAX_LAYERS;
+    v = MIST__FN(mist__unit)(dir);
+    w = v.y < MIST__C(-1) ? MIST__C(-1) : (v.y > MIST__C(1) ? MIST__C(1) : v.y);
+    for (k = 0; k < n; ++k) {
+        for (c = 0; c < 3; ++c)
+            ok[k] = MIST__FN(mist__hlayer)(&layers[k], c, &sR[k][c], &sM[k][c], &st[k][c]);
+        H[k] = layers[k].scale_height;
+        d0[k] = MIST__FN(mist__pos)(layers[k].density);
+        if (!ok[k]) continue;
+        lnd[k] = MIST__M(log)(d0[k]);
+        if (H[k] != H[0]) same = 0;
+        seg[k] = MIST__FN(mist__hray_eval)(y, w, MIST__C(0), s, layers[k].base, H[k], d0[k]);
+        for (c = 0; c < 3; ++c)
+            if (st[k][c] > MIST__C(0) && seg[k].col > MIST__C(0)) tau[c] += st[k][c] * seg[k].col;
+    }
+    for (c = 0; c < 3; ++c) tr[c] = MIST__M(exp)(-tau[c]);
+    if (!inscatter && !bound) goto out;
+    for (c = 1; c < 3; ++c) if (tau[c] > tau[cs]) cs = c;
+    if (!(tau[cs] > MIST__C(0))) goto out;
+    {   /* lights, phase functions */
+        MIST__V3 l = MIST__FN(mist__unit)(layers[0].sun_dir);
+        MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
+        pR = MIST__FN(mist_rayleigh_eval)(u);
+        for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist_fog_eval)(layers[k].mie_phase, u);
+        E[0]  = layers[0].sun.r;     E[1]  = layers[0].sun.g;     E[2]  = layers[0].sun.b;
+        La[0] = layers[0].ambient.r; La[1] = layers[0].ambient.g; La[2] = layers[0].ambient.b;
+        for (c = 0; c < 3; ++c) { E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]); }
+        sunx = layers[0].sun_extinction != 0;
+        ly = l.y;
+        if (ly > MIST__C(0)) { nu = (ly - w) / ly; anu = nu < MIST__C(0) ? -nu : nu; }
+    }
+    /* piece boundaries: equal steps of the square root of the
+     * transmittance of channel cs (each piece's bound is then ~ its share
+     * of the variation / pieces^2, the unbounded last one included), found
+     * by Newton's method on ln tau(t); they need not be exact: the estimate
+     * and its bound hold for any cut */
+    np = pieces <= 0 ? 8 : (pieces > 64 ? 64 : pieces);
+    if (same || w == MIST__C(0)) np = 1;        /* one exponential: exact */
+    tb[0] = MIST__C(0);
+    {
+        MIST__T om = -MIST__M(expm1)(MIST__C(-0.5) * tau[cs]), tprev = MIST__C(0), mprev = MIST__C(0);
+        for (k = 0; k < n; ++k)
+            if (ok[k] && st[k][cs] > MIST__C(0)) mprev += st[k][cs] * seg[k].rho0;
+        for (j = 1; j < np; ++j) {
+            MIST__T target = MIST__C(-2) * MIST__M(log1p)(-om * (MIST__T)j / (MIST__T)np);
+            MIST__T lo = tb[j - 1], hi = s, t = lo, tv = tprev, mu = mprev, tn, r;
+            int it;
+            for (it = 0; it < 40; ++it) {
+                if (it == 0) tn = t + (target - tv) / mu;     /* from the last cut */
+                else {
+                    r = MIST__M(log)(tv / target);
+                    if (r < MIST__C(1e-3) && r > MIST__C(-1e-3)) break;
+                    if (r < MIST__C(0)) lo = t; else hi = t;
+                    tn = t - r * tv / mu;
+                }
+                if (!(tn > lo && tn < hi))
+                    tn = hi < MIST__BIG ? MIST__C(0.5) * (lo + hi)
+                                        : lo + MIST__C(2) * (t > lo ? t - lo : (lo > MIST__C(1) ? lo : MIST__C(1)));
+                if (tn == t) break;
+                t = tn;
+                tv = mu = MIST__C(0);
+                for (k = 0; k < n; ++k) {
+                    MIST__HRAY q;
+                    if (!ok[k] || !(st[k][cs] > MIST__C(0))) continue;
+                    q = MIST__FN(mist__hray_eval)(y, w, MIST__C(0), t, layers[k].base, H[k], d0[k]);
+                    tv += st[k][cs] * q.col;
+                    mu += st[k][cs] * q.rho1;
+                }
+            }
+            if (!(t > tb[j - 1] && t < s)) { np = j; break; }
+            tb[j] = t;
+            tprev = tv;
+            mprev = mu;
+        }
+    }
+    tb[np] = s;
+    {
+        MIST__T tj[3], psi[3], rnd[3];
+        for (c = 0; c < 3; ++c) { tj[c] = MIST__C(0); psi[c] = MIST__C(0); rnd[c] = MIST__C(0); }
+        if (sunx && ly > MIST__C(0))
+            for (k = 0; k < n; ++k)
+                if (ok[k]) for (c = 0; c < 3; ++c)
+                    if (st[k][c] > MIST__C(0) && seg[k].rho0 > MIST__C(0))
+                        psi[c] += st[k][c] * seg[k].rho0 * (H[k] / ly);
+        for (j = 0; j < np; ++j) {
+            MIST__T dt = tb[j + 1] - tb[j];
+            for (k = 0; k < n; ++k)
+                if (ok[k]) seg[k] = np == 1
+                    ? MIST__FN(mist__hray_eval)(y, w, MIST__C(0), s, layers[k].base, H[k], d0[k])
+                    : MIST__FN(mist__hray_eval)(y, w, tb[j], dt, layers[k].base, H[k], d0[k]);
+            for (c = 0; c < 3; ++c) {
+                MIST__T dtau = MIST__C(0), amb = MIST__C(0), sun = MIST__C(0), mu0 = MIST__C(0);
+                MIST__T psi1 = MIST__C(0), gj, gk, wamb, wsun, osc = MIST__C(0);
+                MIST__T cmin[2], cmax[2], fmin, fmax;
+                int first = 1;
+                for (k = 0; k < n; ++k) {
+                    if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                    if (seg[k].col > MIST__C(0)) {
+                        dtau += st[k][c] * seg[k].col;
+                        amb  += (sR[k][c] + sM[k][c]) * seg[k].col;
+                        sun  += (sR[k][c] * pR + sM[k][c] * pM[k]) * seg[k].col;
+                    }
+                    mu0 += st[k][c] * seg[k].rho0;
+                    if (sunx && ly > MIST__C(0) && seg[k].rho1 > MIST__C(0))
+                        psi1 += st[k][c] * seg[k].rho1 * (H[k] / ly);
+                }
+                if (!(dtau > MIST__C(0))) continue;
+                if (!(dtau < MIST__BIG)) {           /* unbounded piece: the */
+                    amb = sun = MIST__C(0);           /* source ratio at its start */
+                    for (k = 0; k < n; ++k) {
+                        if (!ok[k] || !(st[k][c] > MIST__C(0)) || !(seg[k].rho0 > MIST__C(0))
+                        || !(mu0 < MIST__BIG)) continue;
+                        amb += (sR[k][c] + sM[k][c]) * (seg[k].rho0 / mu0);
+                        sun += (sR[k][c] * pR + sM[k][c] * pM[k]) * (seg[k].rho0 / mu0);
+                    }
+                }
+                /* weights: int over the piece of e^-(tau - tau_j) (ambient) and
+                 * of e^-(psi - psi_low) (dimmed sun), per unit source column */
+                if (dtau < MIST__BIG) {
+                    wamb = dtau < MIST__C(1) ? MIST__FN(mist__phi1)(dtau) : -MIST__M(expm1)(-dtau) / dtau;
+                    wsun = dtau * anu < MIST__C(1) ? MIST__FN(mist__phi1)(dtau * anu)
+                                                   : -MIST__M(expm1)(-dtau * anu) / (dtau * anu);
+                } else {
+                    wamb = MIST__C(1);
+                    wsun = anu > MIST__C(0) ? MIST__C(1) / anu : MIST__C(0);
+                }
+                gj = MIST__M(exp)(-tj[c]);
+                ls[c] += gj * La[c] * amb * wamb;
+                if (gj * amb > MIST__C(0)) rnd[c] += gj * La[c] * amb * wamb * tj[c];
+                /* Bound: the piece's estimate takes each layer's share f_i of
+                 * the extinction as constant (its column average); F = sum c_i
+                 * f_i varies by at most osc = (c_max - c_min)/2 sum_i osc f_i,
+                 * so the error is below osc * min(int g, dtau/4 * osc g)
+                 * (Gruss), g the weight e^-tau or e^-psi. */
+                cmin[0] = cmin[1] = cmax[0] = cmax[1] = MIST__C(0);
+                for (i = 0; i < n; ++i) {
+                    MIST__T sa = MIST__C(0), sb = MIST__C(0), ci[2];
+                    if (!ok[i] || !(st[i][c] > MIST__C(0))) continue;
+                    ci[0] = La[c] * (sR[i][c] + sM[i][c]) / st[i][c]
+                          + (sunx ? MIST__C(0) : E[c] * (sR[i][c] * pR + sM[i][c] * pM[i]) / st[i][c]);
+                    ci[1] = E[c] * (sR[i][c] * pR + sM[i][c] * pM[i]) / st[i][c];
+                    if (first) { cmin[0] = cmax[0] = ci[0]; cmin[1] = cmax[1] = ci[1]; first = 0; }
+                    cmin[0] = ci[0] < cmin[0] ? ci[0] : cmin[0]; cmax[0] = ci[0] > cmax[0] ? ci[0] : cmax[0];
+                    cmin[1] = ci[1] < cmin[1] ? ci[1] : cmin[1]; cmax[1] = ci[1] > cmax[1] ? ci[1] : cmax[1];
+                    if (np == 1 && same) continue;
+                    for (k = 0; k < n; ++k) {
+                        /* r_ik = st_k rho_k / (st_i rho_i), monotone along the
+                         * ray: in logs, at the piece start and its change */
+                        MIST__T lr, dl, ra, rb, ik = MIST__C(1) / H[i], kk;
+                        if (k == i || !ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        kk = MIST__C(1) / H[k];
+                        lr = MIST__M(log)(st[k][c] / st[i][c]) + lnd[k] - lnd[i]
+                           - (y + w * tb[j] - layers[k].base) * kk
+                           + (y + w * tb[j] - layers[i].base) * ik;
+                        dl = w * (ik - kk);
+                        dl = dl == MIST__C(0) ? MIST__C(0) : dl * dt;
+                        ra = MIST__M(exp)(lr);
+                        rb = MIST__M(exp)(lr + dl);
+                        sa += ra > rb ? ra : rb;
+                        sb += ra < rb ? ra : rb;
+                    }
+                    fmin = MIST__C(1) / (MIST__C(1) + sa);
+                    fmax = MIST__C(1) / (MIST__C(1) + sb);
+                    osc += fmax - fmin >= MIST__C(0) ? fmax - fmin : MIST__C(1);   /* NaN: all */
+                }
+                gk = dtau < MIST__BIG ? MIST__M(exp)(-(tj[c] + dtau)) : MIST__C(0);
+                bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * (gj - gk)
+                       * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
+                if (!sunx) {
+                    ls[c] += gj * E[c] * sun * wamb;
+                    if (gj * sun > MIST__C(0)) rnd[c] += gj * E[c] * sun * wamb * tj[c];
+                }
+                else if (ly > MIST__C(0)) {
+                    MIST__T pj = psi[c] + tj[c], pk = dtau < MIST__BIG ? psi1 + tj[c] + dtau : (MIST__T)INFINITY;
+                    MIST__T plo = pj < pk ? pj : pk, ej = MIST__M(exp)(-pj), ek = MIST__M(exp)(-pk);
+                    MIST__T dg = ej > ek ? ej - ek : ek - ej;
+                    ls[c] += MIST__M(exp)(-plo) * E[c] * sun * wsun;
+                    if (MIST__M(exp)(-plo) * sun > MIST__C(0))
+                        rnd[c] += MIST__M(exp)(-plo) * E[c] * sun * wsun * plo;
+                    MIST__T fac = MIST__C(0.25) * dtau;     /* min(1/|nu|, dtau/4) */
+                    if (anu * fac > MIST__C(1)) fac = MIST__C(1) / anu;
+                    bd[c] += MIST__C(0.5) * (cmax[1] - cmin[1]) * osc * dg * fac;
+                    psi[c] = psi1;
+                }
+                tj[c] += dtau;
+            }
+        }
+        /* rounding of the estimate itself: a few eps per piece, and the
+         * exponentials' eps times their arguments (rnd) */
+        for (c = 0; c < 3; ++c) {
+            bd[c] = bd[c] * (MIST__C(1) + MIST__C(64) * MIST__EPS)
+                  + MIST__C(4) * (MIST__T)(np + 8) * MIST__EPS * ls[c] + MIST__C(8) * MIST__EPS * rnd[c];
+            if (!(bd[c] >= MIST__C(0))) bd[c] = (MIST__T)INFINITY;   /* beyond range: none */
+        }
+    }
+out:
+    if (transmittance) { transmittance->r = tr[0]; transmittance->g = tr[1]; transmittance->b = tr[2]; }
+    if (inscatter) { inscatter->r = ls[0]; inscatter->g = ls[1]; inscatter->b = ls[2]; }
+    if (bound) { bound->r = bd[0]; bound->g = bd[1]; bound->b = bd[2]; }
+}
+
+/* ------------------------------------------------------------------------ */
+/* A ray-marching step with linear extinction [B08]                          */
+/* ------------------------------------------------------------------------ */
+
+/* sum_{k<n} c_k T_k(u), u in [-1, 1] (Clenshaw) */
+MIST__F MIST__T MIST__FN(mist__cheb)(const double *c, int n, MIST__T u)
+{
+    MIST__T b0 = MIST__C(0), b1 = MIST__C(0), b2, u2 = u + u;
+    int k;
+    for (k = n - 1; k >= 1; --k) { b2 = b1; b1 = b0; b0 = (MIST__T)c[k] + u2 * b1 - b2; }
+    return (MIST__T)c[0] + u * b0 - b1;
+}
+
+#define MIST__SQRTPI 1.77245385090551602729816748334114518
+#define MIST__NC(nd, nf) (MIST__EPS < 1e-10 ? (nd) : (nf))
+
+/* erfcx(x) = e^(x^2) erfc(x) and *g = G(x) = 1 - sqrt(pi) x erfcx(x), both
+ * to relative precision, for x >= 0 (+inf too).  Piecewise Chebyshev series
+ * (erfcx on [0, 1/2], G on [1/2, 2], 2 x^2 G on [2, 4] and [4, 8]; fitted to
+ * 50-digit values) and the asymptotic series of 2 x^2 G beyond 8. */
+MIST__F MIST__T MIST__FN(mist__erfcx)(MIST__T x, MIST__T *g)
+{
+    /* erfcx(x), x in [0, 0.5]: Chebyshev series on [0, 0.5], 16 terms (float: 9) */
+    static const double ex0[16] = {
+        0.788974204329831875789, -0.190549590765591830907, 0.0187487664140465659436,
+        -0.00159673853951946177843, 0.000121653708538792932327, -0.00000846556070795415573408,
+        5.45763458055360256486e-7, -3.29360853217168330576e-8, 1.87534689888528002932e-9,
+        -1.01373576635176259836e-10, 5.22845056525538442818e-12, -2.58354146020934923514e-13,
+        1.22730252463624798877e-14, -5.6215578912286297107e-16, 2.48901885680302079966e-17,
+        -1.06763023502818901048e-18
+    };
+    /* G(x) = 1 - sqrt(pi) x erfcx(x), x in [0.5, 2]: Chebyshev series on [0.5, 2], 21 terms (float: 12) */
+    static const double gx1[21] = {
+        0.227884784802039895534, -0.169722604592898790106, 0.0446645461623479120367,
+        -0.00979042862878067859415, 0.00189691093524192984201, -0.000334750160553996303435,
+        0.0000547816251730823193888, -0.00000841386413337517572126, 0.0000012232799925600718326,
+        -1.69443958748515753091e-7, 2.24740936021165952242e-8, -2.86583279589083535166e-9,
+        3.52514063877018207639e-10, -4.19439025848149078005e-11, 4.83901656280491568786e-12,
+        -5.4241036550024913763e-13, 5.9177133155913318007e-14, -6.293819411137766434e-15,
+        6.53448601752675770724e-16, -6.63106691805052433306e-17, 6.58436401076366973961e-18
+    };
+    /* 2 x^2 G(x), x in [2, 4]: Chebyshev series on [2, 4], 21 terms (float: 11) */
+    static const double gx2[21] = {
+        0.852876285034102207581, 0.0782420178532644881193, -0.0147870059587151229521,
+        0.00232322961820125838878, -0.00031596838472959288683, 0.0000371029896178874017416,
+        -0.00000356259196223612520627, 2.17342948832857427808e-7, 1.10596279751669682873e-8,
+        -6.98350174585785958344e-9, 1.6161241914719252319e-9, -2.92582209597950979499e-10,
+        4.67300927650283326541e-11, -6.87957752999648259211e-12, 9.53810759522416890552e-13,
+        -1.26087460318976182831e-13, 1.60191092391976658991e-14, -1.96673490233997309088e-15,
+        2.34281210762551187828e-16, -2.71608490948211749982e-17, 3.07194212784227614355e-18
+    };
+    /* 2 x^2 G(x), x in [4, 8]: Chebyshev series on [4, 8], 23 terms (float: 11) */
+    static const double gx3[23] = {
+        0.954685005315027637447, 0.0281631157423555443027, -0.00653006717712385006797,
+        0.00132224360215378549138, -0.000245885968249216119529, 0.0000429321081118007241049,
+        -0.00000711560645499629330446, 0.00000112536042612593393637, -1.70071282988430828933e-7,
+        2.45088765233489174025e-8, -3.34599989233202081632e-9, 4.26666179212920076953e-10,
+        -4.92695504825715366478e-11, 4.7515490101804018382e-12, -2.68607040611429654878e-13,
+        -3.08742071754613795616e-14, 1.55669763350802244415e-14, -3.95273243519772696601e-15,
+        8.2357287015564925681e-16, -1.55213667482183615823e-16, 2.74583754575748056807e-17,
+        -4.64366518163922052996e-18, 7.58601270912598060748e-19
+    };
+    MIST__T e, gg, h;
+    if (x <= MIST__C(0.5)) {
+        e  = MIST__FN(mist__cheb)(ex0, MIST__NC(16, 9), MIST__C(4) * x - MIST__C(1));
+        *g = MIST__C(1) - MIST__C(MIST__SQRTPI) * x * e;
+        return e;
+    }
+    if (x <= MIST__C(2))
+        gg = MIST__FN(mist__cheb)(gx1, MIST__NC(21, 12), (MIST__C(4) * x - MIST__C(5)) / MIST__C(3));
+    else {
+        if (x <= MIST__C(4)) h = MIST__FN(mist__cheb)(gx2, MIST__NC(21, 11), x - MIST__C(3));
+        else if (x <= MIST__C(8)) h = MIST__FN(mist__cheb)(gx3, MIST__NC(23, 11), MIST__C(0.5) * x - MIST__C(3));
+        else {   /* 2 x^2 G = sum (-1)^n (2n+1)!! / (2x^2)^n */
+            MIST__T v = MIST__C(0.5) / x / x, t = MIST__C(1);
+            int n;
+            h = MIST__C(1);
+            for (n = 1; n < 40; ++n) {
+                t *= -(MIST__T)(2 * n + 1) * v;
+                h += t;
+                if ((t < MIST__C(0) ? -t : t) < MIST__C(0.125) * MIST__EPS) break;
+            }
+        }
+        gg = h * (MIST__C(0.5) / x) / x;
+    }
+    *g = gg;
+    return (MIST__C(1) - gg) / (MIST__C(MIST__SQRTPI) * x);
+}
+
+/* Dawson's F(y) = e^(-y^2) int_0^y e^(t^2) dt and *k = K(y) = 2 y F(y) - 1,
+ * for y >= 0 (+inf too): F on [0, 1/2], K on [1/2, 2], 2 y^2 K on [2, 4]
+ * and [4, 8] (Chebyshev), the asymptotic series of 2 y^2 K beyond. */
+MIST__F MIST__T MIST__FN(mist__dawson)(MIST__T y, MIST__T *k)
+{
+    /* F(y) (Dawson), y in [0, 0.5]: Chebyshev series on [0, 0.5], 15 terms (float: 9) */
+    static const double dw0[15] = {
+        0.225890317645815001125, 0.214147860632557119854, -0.0138096567231503625153,
+        -0.00194001509605431526956, 0.000138356467229671520007, 0.0000103850305827859059789,
+        -8.2917102661030543078e-7, -3.89262960066620559686e-8, 3.543878078013367532e-9,
+        1.10467916967845344038e-10, -1.17664861431452134943e-11, -2.46791609571394808832e-13,
+        3.19293617326914988835e-14, 4.39388958561342182005e-16, -7.32348515902251146031e-17
+    };
+    /* K(y) = 2 y F(y) - 1, y in [0.5, 2]: Chebyshev series on [0.5, 2], 24 terms (float: 14) */
+    static const double kd1[24] = {
+        0.0123236795027359259311, 0.375259884587860605562, -0.21219394469860614479,
+        0.0192593804721557872845, 0.0149304102070197254552, -0.0042699997174450247629,
+        -0.00014158238755822222005, 0.00021871363977412240054, -0.0000207285680059763648878,
+        -0.00000544503044365577725003, 0.00000116878683798916877803, 5.09106505632588164008e-8,
+        -3.3878986528792405334e-8, 1.29936584052933958303e-9, 6.43169039118701811787e-10,
+        -6.69445750879055798024e-11, -8.05857662080858212023e-12, 1.62651594444968919926e-12,
+        4.72536199484339934886e-14, -2.77536366064071349315e-14, 6.1899523882088560815e-16,
+        3.62001361519224473522e-16, -2.38939098456715242365e-17, -3.63973219372683005578e-18
+    };
+    /* 2 y^2 K(y), y in [2, 4]: Chebyshev series on [2, 4], 27 terms (float: 16) */
+    static const double kd2[27] = {
+        1.32808446687388698156, -0.276314500351450781577, 0.0634996684879336320246,
+        0.00593773738823753607371, -0.0125552915989507663559, 0.00554630121583894694271,
+        -0.00114203522960673341239, -0.0000440946584322324892902, 0.000102023001755718296614,
+        -0.0000286153091803084798282, 0.00000189549354745843228075, 0.00000108009643114950136717,
+        -3.55025943915935941431e-7, 2.98819429291511816563e-8, 8.78971639250287103242e-9,
+        -2.89799513428592572777e-9, 2.13695257478742160188e-10, 6.18571049107776689431e-11,
+        -1.70757813695915072027e-11, 8.06574830090500737475e-13, 3.67599222119310535668e-13,
+        -7.41680270351012697438e-14, 6.35229572383124776667e-16, 1.73400830395049213751e-15,
+        -2.31566086395579551624e-16, -1.09533350162480778118e-17, 6.22406863561150083956e-18
+    };
+    /* 2 y^2 K(y), y in [4, 8]: Chebyshev series on [4, 8], 32 terms (float: 15) */
+    static const double kd3[32] = {
+        1.05596665147414905499, -0.0408995184256726372584, 0.0118710753579476923081,
+        -0.00319878445595639502717, 0.000843867259722393469586, -0.000223829836775395644678,
+        0.0000606771423142433878504, -0.0000169729782010883110563, 0.00000490518762992204890296,
+        -0.00000144952422056554163114, 4.27535597403592641205e-7, -1.20952060101269124733e-7,
+        3.07503282406167416979e-8, -6.06967838693738852914e-9, 3.7215218422496417949e-10,
+        4.35147798223347600009e-10, -2.96069745691878076738e-10, 1.24476870258757077011e-10,
+        -3.94980895987388369341e-11, 9.25693235440570560585e-12, -1.17160538123931948167e-12,
+        -2.2467366545163878716e-13, 2.04875677476135586671e-13, -7.62383456340401958925e-14,
+        1.80189337305108064986e-14, -2.03302736572863980511e-15, -4.64827045713939032701e-16,
+        3.3300201920309775211e-16, -9.95860646049855284994e-17, 1.60243642192026902138e-17,
+        4.65198468760252382846e-19, -1.17643039128226114545e-18
+    };
+    MIST__T f, kk, h;
+    if (y <= MIST__C(0.5)) {
+        f  = MIST__FN(mist__cheb)(dw0, MIST__NC(15, 9), MIST__C(4) * y - MIST__C(1));
+        *k = MIST__C(2) * y * f - MIST__C(1);
+        return f;
+    }
+    if (y <= MIST__C(2))
+        kk = MIST__FN(mist__cheb)(kd1, MIST__NC(24, 14), (MIST__C(4) * y - MIST__C(5)) / MIST__C(3));
+    else {
+        if (y <= MIST__C(4)) h = MIST__FN(mist__cheb)(kd2, MIST__NC(27, 16), y - MIST__C(3));
+        else if (y <= MIST__C(8)) h = MIST__FN(mist__cheb)(kd3, MIST__NC(32, 15), MIST__C(0.5) * y - MIST__C(3));
+        else {   /* 2 y^2 K = sum (2n+1)!! / (2y^2)^n */
+            MIST__T v = MIST__C(0.5) / y / y, t = MIST__C(1);
+            int n;
+            h = MIST__C(1);
+            for (n = 1; n < 40; ++n) {
+                t *= (MIST__T)(2 * n + 1) * v;
+                h += t;
+                if (t < MIST__C(0.125) * MIST__EPS) break;
+            }
+        }
+        kk = h * (MIST__C(0.5) / y) / y;
+    }
+    *k = kk;
+    return (MIST__C(1) + kk) * (MIST__C(0.5) / y);
+}
+
+/* The step's weights W0 = int_0^1 (1-t) e^-tau(t) dt, W1 = int_0^1 t e^-tau(t)
+ * dt for tau(t) = p t + b t^2, b = (q - p)/2, p, q >= 0 finite (the optical
+ * depth rates at the two ends, times the length).  See the section comment. */
+MIST__F void MIST__FN(mist__seg_w)(MIST__T p, MIST__T q, MIST__T *w0, MIST__T *w1)
+{
+    static const double gx[8] = {
+        0.0950125098376374401853, 0.28160355077925891323, 0.458016777657227386342,
+        0.617876244402643748447, 0.755404408355003033895, 0.86563120238783174388,
+        0.944575023073232576078, 0.989400934991649932596 };
+    static const double gw[8] = {
+        0.189450610455068496285, 0.182603415044923588867, 0.169156519395002538189,
+        0.149595988816576732082, 0.124628971255533872052, 0.0951585116824927848099,
+        0.0622535239386478928628, 0.0271524594117540948518 };
+    MIST__T t1 = MIST__C(0.5) * p + MIST__C(0.5) * q, b = MIST__C(0.5) * (q - p), m0, m1, e;
+    int i;
+    if (t1 <= MIST__C(2)) {
+        /* Gauss-Legendre, 16 points: the integrands are entire and small
+         * here, so the rule's error is below 1e-22 (Bernstein ellipse 8) */
+        MIST__T a0 = MIST__C(0), a1 = MIST__C(0);
+        for (i = 0; i < 8; ++i) {
+            MIST__T d = MIST__C(0.5) * (MIST__T)gx[i], wt = MIST__C(0.5) * (MIST__T)gw[i];
+            MIST__T tl = MIST__C(0.5) - d, th = MIST__C(0.5) + d;
+            MIST__T el = wt * MIST__M(exp)(-tl * (p + b * tl)), eh = wt * MIST__M(exp)(-th * (p + b * th));
+            a0 += th * el + tl * eh;            /* (1 - t) at tl is th */
+            a1 += tl * el + th * eh;
+        }
+        *w0 = a0; *w1 = a1;
+        return;
+    }
+    e = MIST__M(exp)(-t1);
+    if ((b < MIST__C(0) ? -b : b) <= MIST__EPS * MIST__EPS * p * p) {
+        /* constant extinction (the t^2 term below eps^2 of the rest) */
+        m0 = -MIST__M(expm1)(-p) / p;
+        m1 = (m0 - MIST__M(exp)(-p)) / p;
+    } else if (b > MIST__C(0)) {
+        /* extinction rising: t = (x - x0)/sqrt(b) turns tau into x^2 - x0^2
+         *   M0 = sqrt(pi)/(2 sqrt b) (erfcx(x0) - e^-t1 erfcx(x1))
+         *   2 b M1 = G(x0) - e^-t1 (sqrt(b)/x1 + x0/x1 G(x1)),
+         * x0 = p/(2 sqrt b), x1 = q/(2 sqrt b): no difference loses more than
+         * 1.5 bits for t1 > 2 (the two terms differ by e^-t1 at least). */
+        MIST__T sb = MIST__M(sqrt)(b), x0 = MIST__C(0.5) * p / sb, x1 = MIST__C(0.5) * q / sb;
+        MIST__T g0, g1, e0 = MIST__FN(mist__erfcx)(x0, &g0), e1 = MIST__FN(mist__erfcx)(x1, &g1);
+        m0 = MIST__C(0.5) * MIST__C(MIST__SQRTPI) / sb * (e0 - e * e1);
+        m1 = (g0 - e * (sb / x1 + x0 / x1 * g1)) / (MIST__C(2) * b);
+    } else {
+        /* extinction falling: t = (y1 - y)/sqrt(-b) gives Dawson's F
+         *   M0 = (F(y1) - e^-t1 F(y0)) / sqrt(-b)
+         *   -2 b M1 = K(y1) - e^-t1 (2 y1 F(y0) - 1),
+         * y1 = p/(2 sqrt(-b)) > y0 = q/(2 sqrt(-b)) (1.5 bits at most, as above). */
+        MIST__T sb = MIST__M(sqrt)(-b), y1 = MIST__C(0.5) * p / sb, y0 = MIST__C(0.5) * q / sb;
+        MIST__T k0, k1, f0 = MIST__FN(mist__dawson)(y0, &k0), f1 = MIST__FN(mist__dawson)(y1, &k1);
+        /* 2 y1 F(y0) - 1 = (y1/y0)(1 + K(y0)) - 1 = (sqrt(-b) + y1 K(y0))/y0
+         * (y1 - y0 = sqrt(-b)): the right side is a sum of positive terms
+         * where K(y0) >= 0 (y0 >= 0.93), the left has no cancellation below */
+        MIST__T c = y0 >= MIST__C(1) ? (sb + y1 * k0) / y0 : MIST__C(2) * y1 * f0 - MIST__C(1);
+        m0 = (f1 - e * f0) / sb;
+        m1 = (k1 - e * c) / (MIST__C(-2) * b);
+    }
+    *w1 = m1;
+    *w0 = m0 - m1;                  /* m1 <= m0/2: e^-tau falls, so t's mean <= 1/2 */
+}
+
+/* One step of a ray march through a heterogeneous medium [B08]: over a
+ * segment of `length` whose extinction varies linearly from k0 to k1 and
+ * whose source (scattering coefficient x phase x incident radiance, per
+ * unit length) varies linearly from s0 to s1, returns the single-scattered
+ * radiance  int_0^length s(x) exp(-int_0^x k) dx  in closed form and sets
+ * *transmittance (may be NULL) to exp(-length (k0 + k1)/2).  Exact and
+ * stable as the extinction goes to 0 (the trapezoid rule of s, then) and
+ * grows without bound; see the section comment.  k0, k1: NaN, negative -> 0;
+ * s0, s1 NaN -> 0; length NaN or <= 0 -> 0 (transmittance 1); length +inf:
+ * the limit s0/k0 (transmittance 0; +inf if k0 = 0 < s0). */
+MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0, MIST__T s1,
+                                              MIST__T length, MIST__T *transmittance)
+{
+    MIST__T p, q, w0, w1, tr = MIST__C(1), r = MIST__C(0);
+    k0 = MIST__FN(mist__pos)(k0); k1 = MIST__FN(mist__pos)(k1);
+    if (!(s0 == s0)) s0 = MIST__C(0);
+    if (!(s1 == s1)) s1 = MIST__C(0);
+    if (length > MIST__C(0)) {
+        p = k0 * length; q = k1 * length;
+        if (length < MIST__BIG && p < MIST__BIG && q < MIST__BIG) {
+            tr = MIST__M(exp)(MIST__C(-0.5) * p - MIST__C(0.5) * q);
+            MIST__FN(mist__seg_w)(p, q, &w0, &w1);
+            r = (length * w0) * s0 + (length * w1) * s1;
+        } else {                                /* unbounded: the limit */
+            tr = k0 > MIST__C(0) || k1 > MIST__C(0) ? MIST__C(0) : MIST__C(1);
+            r = k0 > MIST__C(0) ? s0 / k0 : (s0 == MIST__C(0) ? MIST__C(0) : s0 * (MIST__T)INFINITY);
+        }
+    }
+    if (transmittance) *transmittance = tr;
+    return r;
+}
+
+#undef MIST__SQRTPI
+#undef MIST__NC
 
 #undef MIST__RGB
 #undef MIST__HFOG

@@ -1,0 +1,1119 @@
+/* test_height_fog.c - the analytic height fog of include/mist.h ("Analytic
+ * height fog" section) against an independent adaptive quadrature of the
+ * model's integrals [I18 eq. 12-13], never against its closed forms:
+ *
+ *   T     = exp(-st C(s)),         C(t) = int_0^t rho(t') dt'
+ *   I     = int_0^s rho(t) exp(-st C(t)) dt                      (ambient)
+ *   I_sun = int_0^s rho(t) exp(-st C(t) - st C_sun(t)) dt        (sun, dimmed)
+ *
+ * with rho(t) = density exp(-(y + w t - base)/H).  C(t) itself is computed
+ * by quadrature at every node (Gauss-Legendre on [left end, node], exact to
+ * ~1e-30 for the exponential over at most half a scale height), the outer
+ * integrals by adaptive Gauss-Kronrod 7-15, all in long double (64-bit
+ * significand: 2^11 finer than double).  C_sun(t), the column above the
+ * point along the sun direction, is rho(t) H / l_y: that single identity is
+ * itself checked against quadrature below (check_sun_column).
+ *
+ * The bar [issue 4]: |got - ref| <= K eps (1 + tau) |ref| with tau the
+ * optical depth involved (view, plus the sun's for the dimmed sun term) and
+ * K small (see BAR below), over omega_y in {0, +-1e-12, +-1e-6, +-1e-3,
+ * +-0.5, +-1}, density factors at the camera e^-700..e^700 (double) and
+ * e^-80..e^80 (float), lengths 0..+inf, extinction 0..large, H 1..1e4.
+ * Results below the normal range (DBL_MIN / eps) cannot carry relative
+ * precision and are compared absolutely. */
+#include "mist.h"
+#include "mist_test.h"
+
+#include <float.h>
+#include <string.h>
+#include <time.h>
+
+typedef long double LD;
+
+/* ------------------------------------------------------------------------ */
+/* Reference quadrature (long double)                                       */
+/* ------------------------------------------------------------------------ */
+
+/* Gauss-Kronrod 7-15, long double constants (QUADPACK digits) */
+static const LD rk_x[8] = {
+    0.991455371120812639206854697526329L, 0.949107912342758524526189684047851L,
+    0.864864423359769072789712788640926L, 0.741531185599394439863864773280788L,
+    0.586087235467691130294144845693013L, 0.405845151377397166906606412076961L,
+    0.207784955007898467600689403773245L, 0.000000000000000000000000000000000L};
+static const LD rk_wk[8] = {
+    0.022935322010529224963732008058970L, 0.063092092629978553290700663189204L,
+    0.104790010322250183839876322541518L, 0.140653259715525918745189590510238L,
+    0.169004726639267902826583426598550L, 0.190350578064785409913256402421014L,
+    0.204432940075298892414161999234649L, 0.209482141084727828012999174891714L};
+static const LD rk_wg[4] = {
+    0.129484966168869693270611432679082L, 0.279705391489276667901467771423780L,
+    0.381830050505118944950369775488975L, 0.417959183673469387755102040816327L};
+
+/* Gauss-Legendre rules on [-1, 1], computed at start-up by Newton's
+ * method: 8 points (a column over up to half a scale height, exact to
+ * ~1e-23 relative) and 4 points (between neighbouring GK15 nodes, at most
+ * 1/20 scale height apart: ~1e-21). */
+#define GLN 8
+static LD gl_x[GLN], gl_w[GLN], g4_x[4], g4_w[4];
+
+static void gl_rule(int n, LD *xs, LD *wt)
+{
+    int i, k, it;
+    for (i = 0; i < n; ++i) {
+        LD x = cosl(3.14159265358979323846264338327950288L * (i + 0.75L) / (n + 0.5L));
+        LD p0, p1, p2 = 0, dp = 0;
+        for (it = 0; it < 20; ++it) {
+            p0 = 1; p1 = x;
+            for (k = 2; k <= n; ++k) { p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
+            dp = n * (x * p1 - p0) / (x * x - 1);
+            x -= p1 / dp;
+        }
+        p0 = 1; p1 = x;
+        for (k = 2; k <= n; ++k) { p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
+        dp = n * (x * p1 - p0) / (x * x - 1);
+        xs[i] = x;
+        wt[i] = 2 / ((1 - x * x) * dp * dp);
+    }
+}
+
+static void gl_init(void)
+{
+    gl_rule(GLN, gl_x, gl_w);
+    gl_rule(4, g4_x, g4_w);
+}
+
+#define NSIG 8
+typedef struct {
+    LD y, w, yb, H, d0;        /* ray and layer (one layer) */
+    int nl;                    /* >1: extra layers below */
+    LD lyb[4], lH[4], ld0[4], lst[4][NSIG];  /* multi-layer: per layer, per sigma */
+    int nsig;
+    LD sig[NSIG];              /* total extinctions (single layer) */
+    LD ly;                     /* > 0: also the dimmed-sun integrals */
+    /* results */
+    LD C;                      /* column to the end (or where it stopped) */
+    LD Ck[4];                  /* multi-layer: per layer */
+    LD I[NSIG], Is[NSIG];
+    LD Il[4][NSIG], Isl[4][NSIG];  /* multi-layer: per emitting layer */
+    int stopped;               /* all optical depths beyond 900: T = 0 */
+    long evals;
+} ref_t;
+
+/* density of layer k at t (k = -1: the single layer) */
+static LD rho_at(const ref_t *r, int k, LD t)
+{
+    if (k < 0) return r->d0 * expl(-(r->y + r->w * t - r->yb) / r->H);
+    return r->ld0[k] * expl(-(r->y + r->w * t - r->lyb[k]) / r->lH[k]);
+}
+
+/* the extinction-weighted columns: for the single layer C (per unit
+ * extinction); for layers, tau_m = sum_k lst[k][m] C_k. */
+typedef struct { LD C; LD Ck[4]; } col_t;
+
+static col_t col_add(const ref_t *r, col_t c, LD a, LD b)
+{
+    int i, k;
+    LD h = (b - a) / 2, m = (a + b) / 2;
+    if (b == a) return c;
+    for (i = 0; i < GLN; ++i) {
+        LD t = m + h * gl_x[i];
+        if (r->nl) for (k = 0; k < r->nl; ++k) c.Ck[k] += h * gl_w[i] * rho_at(r, k, t);
+        else c.C += h * gl_w[i] * rho_at(r, -1, t);
+    }
+    ((ref_t *)r)->evals += GLN;
+    return c;
+}
+
+/* the same over a short gap, 4 points */
+static col_t col_add4(const ref_t *r, col_t c, LD a, LD b)
+{
+    int i, k;
+    LD h = (b - a) / 2, m = (a + b) / 2;
+    if (b == a) return c;
+    for (i = 0; i < 4; ++i) {
+        LD t = m + h * g4_x[i];
+        if (r->nl) for (k = 0; k < r->nl; ++k) c.Ck[k] += h * g4_w[i] * rho_at(r, k, t);
+        else c.C += h * g4_w[i] * rho_at(r, -1, t);
+    }
+    ((ref_t *)r)->evals += 4;
+    return c;
+}
+
+/* the integrands at t given the columns there; f[] gets 2 * nsig (single)
+ * or 2 * nsig * nl (layers) values */
+static int integrand(const ref_t *r, LD t, col_t c, LD *f)
+{
+    int m, k, j, n = 0;
+    if (!r->nl) {
+        LD rho = rho_at(r, -1, t);
+        for (m = 0; m < r->nsig; ++m) {
+            /* (exponents beyond 12000 underflow long double: skip expl) */
+            LD x = r->sig[m] * c.C, xs = r->ly > 0 ? x + r->sig[m] * rho * r->H / r->ly : 0;
+            f[n++] = x == 0 ? rho : (x < 12000 ? rho * expl(-x) : 0);
+            f[n++] = r->ly > 0 ? (xs == 0 ? rho : (xs < 12000 ? rho * expl(-xs) : 0)) : 0;
+        }
+    } else {
+        LD rk[4];
+        for (k = 0; k < r->nl; ++k) rk[k] = rho_at(r, k, t);
+        for (m = 0; m < r->nsig; ++m) {
+            LD tau = 0, ts = 0;
+            for (j = 0; j < r->nl; ++j) {
+                tau += r->lst[j][m] * c.Ck[j];
+                if (r->ly > 0) ts += r->lst[j][m] * rk[j] * r->lH[j] / r->ly;
+            }
+            LD e1 = tau < 12000 ? expl(-tau) : 0, e2 = r->ly > 0 && tau + ts < 12000 ? expl(-tau - ts) : 0;
+            for (k = 0; k < r->nl; ++k) {
+                f[n++] = rk[k] * e1;
+                f[n++] = rk[k] * e2;
+            }
+        }
+    }
+    return n;
+}
+
+#define NF (2 * NSIG * 4)
+static LD ref_tol;
+
+/* optical depth of extinction m for columns c */
+static LD tau_of(const ref_t *r, int m, col_t c)
+{
+    LD tau = 0;
+    int j;
+    if (!r->nl) return r->sig[m] * c.C;
+    for (j = 0; j < r->nl; ++j) tau += r->lst[j][m] * c.Ck[j];
+    return tau;
+}
+
+/* Adaptive GK15 over [a0, b0] given the columns at a0: intervals are taken
+ * left to right from an explicit stack, so the columns at the left end of
+ * each are the running sums; adds into acc[] and returns the columns at b0.
+ * An interval is split (before any rule is trusted) where it spans more
+ * than half a scale height of a layer that matters, or where an extinction
+ * whose integrands still matter builds up a view or view + sun optical
+ * depth above 8 across it: then at the point where that depth would be
+ * about 8, from the end where the depth is least, so a boundary layer of
+ * any thinness is reached in a few steps.  Else GK15 is accepted when
+ * |K15 - G7| is below 4e-18 (times 1 + the magnitude of the integrand's
+ * exponent: its rounding in long double) relative, or 1e-22 of the
+ * integral so far. */
+#define STK 8192
+static col_t adapt(ref_t *r, LD a0, LD b0, col_t ca, LD *acc, int nf)
+{
+    static LD sa[STK], sb[STK];
+    LD fk[NF], fg[NF], fv[15][NF], xmag[NF];
+    int i, j, k, per = r->nl ? 2 * r->nl : 2, top = 0;
+    long guard = 0;
+    sa[0] = a0; sb[0] = b0; top = 1;
+    while (top > 0) {
+        LD a = sa[top - 1], b = sb[top - 1];
+        LD m = (a + b) / 2, h = (b - a) / 2, frac = 0.5L, rmax, ra, rb, ms, hmag = 0;
+        int ok = 1, must = 0, right = 0;
+        col_t zero, inc, cb;
+        --top;
+        memset(&zero, 0, sizeof zero);
+        inc = col_add(r, zero, a, b);        /* the increments, no cancellation */
+        cb = ca;
+        cb.C += inc.C;
+        for (k = 0; k < 4; ++k) cb.Ck[k] += inc.Ck[k];
+        if (!r->nl) { must = fabsl(r->w) * (b - a) > r->H / 2; ra = rho_at(r, -1, a); rb = rho_at(r, -1, b); }
+        else {
+            ra = rb = 0;
+            for (k = 0; k < r->nl; ++k) {
+                LD xa = rho_at(r, k, a), xb = rho_at(r, k, b), sg = 0;
+                for (i = 0; i < r->nsig; ++i) if (r->lst[k][i] > sg) sg = r->lst[k][i];
+                /* the column of a layer too thin to change any optical
+                 * depth by 1e-22 here needs no accuracy */
+                if (fabsl(r->w) * (b - a) > r->lH[k] / 2 && sg * (xa > xb ? xa : xb) * (b - a) > 1e-22L)
+                    must = 1;
+                ra += xa; rb += xb;
+            }
+        }
+        rmax = ra > rb ? ra : rb;
+        /* the densities' own exponents, |y(t) - base| / H, at the ends */
+        for (k = r->nl ? 0 : -1; k < (r->nl ? r->nl : 0); ++k) {
+            LD yb = k < 0 ? r->yb : r->lyb[k], H = k < 0 ? r->H : r->lH[k];
+            LD xa = fabsl(r->y + r->w * a - yb) / H, xb = fabsl(r->y + r->w * b - yb) / H;
+            if (xa > hmag) hmag = xa;
+            if (xb > hmag) hmag = xb;
+        }
+        for (i = 0; i < r->nsig; ++i) {
+            /* view depth (ta .. ta + dt) and view + sun depth (pa .. pb)
+             * across [a, b]: both monotone.  What is left of integral i
+             * here is below e^-(least depth) min((b - a) rmax, 1/sigma);
+             * below 1e-310 nothing matters (the test's floor is 2e-292). */
+            LD ta = tau_of(r, i, ca), dt = tau_of(r, i, inc), pa = ta, pb = ta + dt, da = 0;
+            LD ds, bv, bs, cap, inv = 0, av = 0, as = 0, f;
+            if (!r->nl) inv = r->sig[i] > 0 ? 1 / r->sig[i] : INFINITY;
+            else for (k = 0; k < r->nl; ++k) {
+                LD v = r->lst[k][i] > 0 ? 1 / r->lst[k][i] : INFINITY;
+                if (v > inv) inv = v;
+            }
+            if (r->ly > 0) {
+                if (!r->nl) {
+                    pa += r->sig[i] * ra * r->H / r->ly; pb += r->sig[i] * rb * r->H / r->ly;
+                    da = r->sig[i] * (rb - ra) * r->H / r->ly;
+                } else for (k = 0; k < r->nl; ++k) {
+                    LD xa = rho_at(r, k, a), xb = rho_at(r, k, b);
+                    pa += r->lst[k][i] * xa * r->lH[k] / r->ly;
+                    pb += r->lst[k][i] * xb * r->lH[k] / r->ly;
+                    da += r->lst[k][i] * (xb - xa) * r->lH[k] / r->ly;
+                }
+            }
+            ds = fabsl(dt + da);             /* view + sun depth across */
+            /* the integrands' exponents reach these: their rounding
+             * (relative eps_LD times them) is the noise of the estimate */
+            for (j = 0; j < per; ++j) {
+                xmag[i * per + j] = hmag + ((j & 1) ? (pa > pb ? pa : pb) : ta + dt);
+                if (j & 1) as += acc[i * per + j]; else av += acc[i * per + j];
+            }
+            cap = (b - a) * rmax;
+            if (inv < cap) cap = inv;
+            bv = cap * expl(-ta);
+            bs = r->ly > 0 ? cap * expl(-(pa < pb ? pa : pb)) : 0;
+            if (dt > 8 && bv > 1e-26L * av + 1e-310L) {       /* view: at the start */
+                f = 8 / dt;
+                if (must && right) frac = 0.5L, right = 0;      /* both ends: halve */
+                else if (f < frac) frac = f;
+                must = 1;
+            }
+            if (ds > 8 && bs > 1e-26L * as + 1e-310L) {       /* sun: its low end */
+                int rt = dt + da < 0;
+                f = 8 / ds;
+                if (must && rt != right) frac = 0.5L, right = 0;
+                else { if (f < frac) frac = f; right = rt; }
+                must = 1;
+            }
+        }
+        ms = right ? b - (b - a) * frac : a + (b - a) * frac;
+        if (must && ms > a && ms < b && top + 2 <= STK && ++guard < 4000000L) {
+            sa[top] = ms; sb[top] = b; ++top;          /* right part later */
+            sa[top] = a;  sb[top] = ms; ++top;         /* left part next */
+            continue;
+        }
+        {   /* the columns at the nodes, left to right, gap by gap */
+            col_t c = ca;
+            LD tp = a;
+            for (i = 0; i < 15; ++i) {
+                LD t = i < 7 ? m - h * rk_x[i] : (i == 7 ? m : m + h * rk_x[14 - i]);
+                c = col_add4(r, c, tp, t);
+                tp = t;
+                integrand(r, t, c, fv[i]);
+            }
+            cb = col_add4(r, c, tp, b);
+        }
+        for (j = 0; j < nf; ++j) {
+            fk[j] = rk_wk[7] * fv[7][j];
+            fg[j] = rk_wg[3] * fv[7][j];
+            for (i = 0; i < 7; ++i) {
+                LD sum = fv[i][j] + fv[14 - i][j];
+                fk[j] += rk_wk[i] * sum;
+                if (i & 1) fg[j] += rk_wg[i / 2] * sum;
+            }
+            fk[j] *= h; fg[j] *= h;
+            if (fabsl(fk[j] - fg[j]) > ref_tol * (1 + xmag[j]) * fabsl(fk[j]) + 1e-22L * acc[j] + 1e-4000L)
+                ok = 0;
+        }
+        if (!ok && m > a && m < b && top + 2 <= STK && ++guard < 4000000L) {
+            sa[top] = m; sb[top] = b; ++top;
+            sa[top] = a; sb[top] = m; ++top;
+            continue;
+        }
+        for (j = 0; j < nf; ++j) acc[j] += fk[j];
+        ca = cb;
+    }
+    return ca;
+}
+
+/* smallest optical depth over the sigmas > 0 for columns c */
+static LD min_tau(const ref_t *r, col_t c)
+{
+    LD best = INFINITY;
+    int m, j;
+    for (m = 0; m < r->nsig; ++m) {
+        LD tau = 0, any = 0;
+        if (!r->nl) { tau = r->sig[m] * c.C; any = r->sig[m]; }
+        else for (j = 0; j < r->nl; ++j) { tau += r->lst[j][m] * c.Ck[j]; any += r->lst[j][m]; }
+        if (any > 0 && tau < best) best = tau;
+    }
+    return best;
+}
+
+/* Runs the reference over [0, s] (s may be +inf): blocks of at most half a
+ * scale height along the vertical (each adaptive), until s, or until every
+ * optical depth exceeds 900 (then every T is 0 in double and the rest of
+ * every integral is below e^-900 of it), or, going up, until the column
+ * left above is below 1e-24 of the column so far. */
+static void ref_run(ref_t *r, LD s)
+{
+    LD acc[NF], t = 0, blk, Hmin = r->H, rho0 = 0, sigmin = INFINITY;
+    col_t c;
+    int nf = r->nl ? 2 * r->nsig * r->nl : 2 * r->nsig, j, m, k;
+    memset(&c, 0, sizeof c);
+    for (j = 0; j < NF; ++j) acc[j] = 0;
+    if (r->nl) { Hmin = r->lH[0]; for (k = 1; k < r->nl; ++k) if (r->lH[k] < Hmin) Hmin = r->lH[k]; }
+    if (r->nl) for (k = 0; k < r->nl; ++k) rho0 += rho_at(r, k, 0); else rho0 = rho_at(r, -1, 0);
+    for (m = 0; m < r->nsig; ++m) {
+        LD sg = 0;
+        if (!r->nl) sg = r->sig[m]; else for (k = 0; k < r->nl; ++k) if (r->lst[k][m] > sg) sg = r->lst[k][m];
+        if (sg > 0 && sg < sigmin) sigmin = sg;
+    }
+    r->stopped = 0;
+    r->evals = 0;
+    for (;;) {
+        LD t1, tail = 0;
+        if (r->nl && r->w > 0) {      /* the thinnest layer that still matters */
+            Hmin = INFINITY;
+            for (k = 0; k < r->nl; ++k) {
+                LD sg = 0;
+                for (m = 0; m < r->nsig; ++m) if (r->lst[k][m] > sg) sg = r->lst[k][m];
+                if (sg * rho_at(r, k, t) * r->lH[k] / r->w > 1e-22L && r->lH[k] < Hmin) Hmin = r->lH[k];
+            }
+            if (!(Hmin < INFINITY)) for (k = 0; k < r->nl; ++k) if (r->lH[k] > Hmin || !(Hmin < INFINITY)) Hmin = r->lH[k];
+        }
+        blk = fabsl(r->w) > 0 ? Hmin / fabsl(r->w) / 2 : INFINITY;
+        if (!(blk < INFINITY) || blk > 1e30L) {
+            /* level (or nearly): the density stays put; the block is the
+             * length over which the smallest extinction builds up depth 1 */
+            blk = sigmin < INFINITY ? 50 / (sigmin * (rho0 > 0 ? rho0 : 1)) : (s < INFINITY ? s : 1);
+            if (fabsl(r->w) > 0 && Hmin / fabsl(r->w) / 2 < blk) blk = Hmin / fabsl(r->w) / 2;
+        }
+        t1 = t + blk;
+        if (t1 > s) t1 = s;
+        c = adapt(r, t, t1, c, acc, nf);
+        t = t1;
+        if (t >= s) break;
+        if (min_tau(r, c) > 900) { r->stopped = 1; break; }
+        if (r->w > 0) {
+            LD colsum = 0;
+            if (!r->nl) { tail = rho_at(r, -1, t) * r->H / r->w; colsum = c.C; }
+            else for (k = 0; k < r->nl; ++k) { tail += rho_at(r, k, t) * r->lH[k] / r->w; colsum += c.Ck[k]; }
+            if (tail <= 1e-24L * colsum) break;
+        }
+        if (r->w <= 0 && s == INFINITY && !(sigmin < INFINITY)) { c.C = INFINITY; break; }
+        if (r->evals > 200000000L) break;
+    }
+    r->C = c.C;
+    for (k = 0; k < 4; ++k) r->Ck[k] = c.Ck[k];
+    j = 0;
+    if (!r->nl) for (m = 0; m < r->nsig; ++m) { r->I[m] = acc[j++]; r->Is[m] = acc[j++]; }
+    else for (m = 0; m < r->nsig; ++m) for (k = 0; k < r->nl; ++k) { r->Il[k][m] = acc[j++]; r->Isl[k][m] = acc[j++]; }
+}
+
+/* ------------------------------------------------------------------------ */
+/* The single-layer grid                                                    */
+/* ------------------------------------------------------------------------ */
+
+/* BAR: allowed error in units of eps (1 + tau) |ref|.  The closed forms
+ * take ~6 roundings before the final exp (compensated exponent, phi1 via
+ * expm1, products), each up to 1 ulp in the libm functions; their
+ * sum is <= 8 eps in the column, which the exponential turns into an
+ * absolute 8 eps tau.  16 leaves a factor 2 for the libm of other
+ * platforms (CUDA's expm1 is 1-2 ulp). */
+#define BAR 16.0
+/* SEG_BAR: the step's weights in eps of the weight.  The Chebyshev series
+ * are good to 2^-60; the weights take ~10 roundings, and the difference
+ * formulas lose at most 2 bits (measured over 0 <= p, q <= 1e8 in
+ * mpmath: factor 2.1 to 4.2, see the section comment): 16. */
+#define SEG_BAR 16.0
+
+typedef struct { double T, L, Ls; int nT, nL; } worst_t;
+
+static double rel_units(double got, LD ref, double eps, LD tau, double floor_)
+{
+    LD d = fabsl((LD)got - ref);
+    LD den = (LD)eps * (1 + tau) * fabsl(ref) + floor_;
+    if (got != got) return INFINITY;
+    return (double)(d / den);
+}
+
+static const double ws[] = { 0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3, 0.5, -0.5, 1, -1 };
+static const double sigs[] = { 0, 1e-7, 1e-3, 0.05, 2, 3e3 };
+
+/* one geometry in T = double (is_float = 0) or float: runs the reference and
+ * compares the ambient in-scatter, the transmittance and the dimmed-sun
+ * in-scatter (sun at l_y = ly) for every extinction in sigs[]. */
+static void grid_point(int is_float, double H, double h, double w, double s, double ly,
+                       worst_t *wo, const char *what)
+{
+    const double base = 12.5;
+    double eps = is_float ? 0x1p-24 : 0x1p-53;
+    double floor_ = is_float ? FLT_MIN / 0x1p-24 : DBL_MIN / 0x1p-53;
+    double y = base + h * H, lx = sqrt((1 - ly) * (1 + ly)), wx = sqrt((1 - w) * (1 + w));
+    float yf = (float)y, wf = (float)w, sf = (float)s, Hf = (float)H, lyf = (float)ly;
+    float lxf = (float)sqrt((1 - (double)lyf) * (1 + (double)lyf));
+    float wxf = (float)sqrt((1 - (double)wf) * (1 + (double)wf));
+    ref_t r;
+    int m, c, blk;
+    double u;
+    memset(&r, 0, sizeof r);
+    r.y = is_float ? (LD)yf : (LD)y;
+    r.w = is_float ? (LD)wf : (LD)w;
+    r.yb = base;
+    r.H = is_float ? (LD)Hf : (LD)H;
+    r.d0 = 1;
+    r.ly = is_float ? (LD)lyf : (LD)ly;
+    r.nsig = 6;
+    /* the extinction the code sees: 0.625 sigma (Rayleigh) + 0.375 sigma
+     * (Mie), rounded to T; the reference adds them exactly */
+    for (m = 0; m < 6; ++m) {
+        if (is_float) r.sig[m] = (LD)(float)(0.625 * sigs[m]) + (LD)(float)(0.375 * sigs[m]);
+        else r.sig[m] = (LD)(0.625 * sigs[m]) + (LD)(0.375 * sigs[m]);
+    }
+    ref_run(&r, is_float ? (LD)sf : (LD)s);
+    u = is_float ? (double)(lxf * wxf + lyf * wf) : lx * wx + ly * w;
+    for (blk = 0; blk < 2; ++blk) {
+        double got_T[3], got_L[3], got_S[3], sR[3], sM[3];
+        mist_fog ph = mist_fog_make(0.76, 0, 0, 0);
+        if (!is_float) {
+            mist_hfog f;
+            mist_vec3 o, d;
+            mist_rgb t, l, l2;
+            memset(&f, 0, sizeof f);
+            f.base = base; f.density = 1; f.scale_height = H;
+            f.rayleigh_ext.r = 0.625 * sigs[3 * blk]; f.rayleigh_ext.g = 0.625 * sigs[3 * blk + 1];
+            f.rayleigh_ext.b = 0.625 * sigs[3 * blk + 2];
+            f.mie_ext.r = 0.375 * sigs[3 * blk]; f.mie_ext.g = 0.375 * sigs[3 * blk + 1];
+            f.mie_ext.b = 0.375 * sigs[3 * blk + 2];
+            f.rayleigh_scat.r = 0.9 * f.rayleigh_ext.r; f.rayleigh_scat.g = 0.9 * f.rayleigh_ext.g;
+            f.rayleigh_scat.b = 0.9 * f.rayleigh_ext.b;
+            f.mie_scat.r = 0.5 * f.mie_ext.r; f.mie_scat.g = 0.5 * f.mie_ext.g;
+            f.mie_scat.b = 0.5 * f.mie_ext.b;
+            f.mie_phase = ph;
+            f.ambient.r = f.ambient.g = f.ambient.b = 1;
+            f.sun_dir.x = lx; f.sun_dir.y = ly; f.sun_dir.z = 0;
+            o.x = 3; o.y = y; o.z = -7;
+            d.x = wx; d.y = w; d.z = 0;
+            mist_hfog_eval(&f, o, d, s, &t, &l);
+            f.ambient.r = f.ambient.g = f.ambient.b = 0;
+            f.sun.r = f.sun.g = f.sun.b = 1;
+            f.sun_extinction = 1;
+            l2 = mist_hfog_inscatter(&f, o, d, s);
+            got_T[0] = t.r; got_T[1] = t.g; got_T[2] = t.b;
+            got_L[0] = l.r; got_L[1] = l.g; got_L[2] = l.b;
+            got_S[0] = l2.r; got_S[1] = l2.g; got_S[2] = l2.b;
+            sR[0] = f.rayleigh_scat.r; sR[1] = f.rayleigh_scat.g; sR[2] = f.rayleigh_scat.b;
+            sM[0] = f.mie_scat.r; sM[1] = f.mie_scat.g; sM[2] = f.mie_scat.b;
+        } else {
+            mist_hfogf f;
+            mist_vec3f o, d;
+            mist_rgbf t, l, l2;
+            memset(&f, 0, sizeof f);
+            f.base = (float)base; f.density = 1; f.scale_height = Hf;
+            f.rayleigh_ext.r = (float)(0.625 * sigs[3 * blk]);
+            f.rayleigh_ext.g = (float)(0.625 * sigs[3 * blk + 1]);
+            f.rayleigh_ext.b = (float)(0.625 * sigs[3 * blk + 2]);
+            f.mie_ext.r = (float)(0.375 * sigs[3 * blk]);
+            f.mie_ext.g = (float)(0.375 * sigs[3 * blk + 1]);
+            f.mie_ext.b = (float)(0.375 * sigs[3 * blk + 2]);
+            f.rayleigh_scat.r = 0.5f * f.rayleigh_ext.r; f.rayleigh_scat.g = 0.5f * f.rayleigh_ext.g;
+            f.rayleigh_scat.b = 0.5f * f.rayleigh_ext.b;
+            f.mie_scat.r = 0.5f * f.mie_ext.r; f.mie_scat.g = 0.5f * f.mie_ext.g;
+            f.mie_scat.b = 0.5f * f.mie_ext.b;
+            f.mie_phase = mist_fog_makef(0.76f, 0, 0, 0);
+            f.ambient.r = f.ambient.g = f.ambient.b = 1;
+            f.sun_dir.x = lxf; f.sun_dir.y = lyf; f.sun_dir.z = 0;
+            o.x = 3; o.y = yf; o.z = -7;
+            d.x = wxf; d.y = wf; d.z = 0;
+            mist_hfog_evalf(&f, o, d, sf, &t, &l);
+            f.ambient.r = f.ambient.g = f.ambient.b = 0;
+            f.sun.r = f.sun.g = f.sun.b = 1;
+            f.sun_extinction = 1;
+            l2 = mist_hfog_inscatterf(&f, o, d, sf);
+            got_T[0] = t.r; got_T[1] = t.g; got_T[2] = t.b;
+            got_L[0] = l.r; got_L[1] = l.g; got_L[2] = l.b;
+            got_S[0] = l2.r; got_S[1] = l2.g; got_S[2] = l2.b;
+            sR[0] = f.rayleigh_scat.r; sR[1] = f.rayleigh_scat.g; sR[2] = f.rayleigh_scat.b;
+            sM[0] = f.mie_scat.r; sM[1] = f.mie_scat.g; sM[2] = f.mie_scat.b;
+        }
+        for (c = 0; c < 3; ++c) {
+            int k = 3 * blk + c;
+            LD tau = r.sig[k] * r.C, Tref = r.stopped && r.sig[k] > 0 ? 0 : expl(-tau);
+            LD src = (LD)sR[c] + sM[c];
+            LD ssun = (LD)sR[c] * mist_rayleigh_eval(u) + (LD)sM[c] * mist_fog_eval(ph, u);
+            LD rho0 = rho_at(&r, -1, 0), rho1 = s < INFINITY ? rho_at(&r, -1, r.w > 0 ? (LD)s : 0) : 0;
+            LD A0 = r.sig[k] * rho0 * r.H / r.ly, A1 = tau + r.sig[k] * rho1 * r.H / r.ly;
+            LD Amin = A0 < A1 ? A0 : A1;
+            LD Lref = r.sig[k] > 0 ? src * r.I[k] : 0, Sref = r.sig[k] > 0 ? ssun * r.Is[k] : 0;
+            double eT, eL, eS;
+            if (r.stopped) tau = 900;
+            if (!(Amin < 1e30L)) Amin = 1e30L;
+            eT = rel_units(got_T[c], Tref, eps, tau, floor_);
+            eL = rel_units(got_L[c], Lref, eps, tau, floor_ * (double)src);
+            eS = rel_units(got_S[c], Sref, eps, tau + Amin, floor_ * (double)ssun);
+            if (!(src > 0)) eL = got_L[c] == 0 ? 0 : INFINITY;
+            if (!(ssun > 0)) eS = got_S[c] == 0 ? 0 : INFINITY;
+            if (eT > wo->T) wo->T = eT;
+            if (eL > wo->L) wo->L = eL;
+            if (eS > wo->Ls) wo->Ls = eS;
+            mt_check(eT <= BAR && eL <= BAR && eS <= BAR,
+                          "%s %s H=%g h=%g w=%g s=%g ly=%g sigma=%g: T %.17g ref %.17Lg (%.2f), "
+                          "L %.17g ref %.17Lg (%.2f), Lsun %.17g ref %.17Lg (%.2f) [eps(1+tau)]",
+                          what, is_float ? "float" : "double", H, h, w, s, ly, sigs[k],
+                          got_T[c], Tref, eT, got_L[c], Lref, eL, got_S[c], Sref, eS);
+        }
+    }
+}
+
+static void test_grid(int is_float)
+{
+    /* density factor at the camera e^-h: far below the fog to far above */
+    static const double hd[] = { -700, -30, 0, 2, 40, 700 };
+    static const double hf[] = { -80, -30, 0, 2, 40, 80 };
+    static const double Hs[] = { 1.1, 9876.5 };
+    static const double sm[] = { 0, 0.37, 10, 3e3, INFINITY };   /* x H */
+    worst_t wo;
+    size_t ih, iw, iH, is, nh = is_float ? sizeof hf / sizeof *hf : sizeof hd / sizeof *hd;
+    clock_t t0 = clock();
+    memset(&wo, 0, sizeof wo);
+    for (iH = 0; iH < 2; ++iH)
+        for (ih = 0; ih < nh; ++ih)
+            for (iw = 0; iw < sizeof ws / sizeof *ws; ++iw)
+                for (is = 0; is < sizeof sm / sizeof *sm; ++is) {
+                    double H = Hs[iH], s = sm[is] * H;
+                    grid_point(is_float, H, is_float ? hf[ih] : hd[ih], ws[iw], s, 0.8, &wo, "grid");
+                }
+    printf("grid %s: worst T %.2f, L %.2f, dimmed-sun L %.2f  [eps (1 + tau)]  (%.1f s)\n",
+           is_float ? "float" : "double", wo.T, wo.L, wo.Ls, (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
+/* ------------------------------------------------------------------------ */
+/* The dimmed sun (beyond [I18]): view and sun at the same vertical         */
+/* component (nu = 1 - w/l_y = 0, where the closed form's two exponentials  */
+/* coincide), one ulp-ish either side, low and high suns, steep views.      */
+/* ------------------------------------------------------------------------ */
+
+static void test_sun(int is_float)
+{
+    static const double hs[] = { -30, 0, 300 };
+    static const double wv[] = { 1e-6, 1e-3, 0.5, 1 };
+    static const double Hs[] = { 1.1, 9876.5 };
+    static const double sm[] = { 10, INFINITY };
+    worst_t wo;
+    size_t ih, iw, iH, is;
+    int il;
+    clock_t t0 = clock();
+    memset(&wo, 0, sizeof wo);
+    for (iH = 0; iH < 2; ++iH)
+        for (ih = 0; ih < sizeof hs / sizeof *hs; ++ih)
+            for (iw = 0; iw < sizeof wv / sizeof *wv; ++iw)
+                for (is = 0; is < sizeof sm / sizeof *sm; ++is)
+                    for (il = 0; il < 7; ++il) {
+                        double w = il < 5 ? wv[iw] : -wv[iw], ly, h = hs[ih];
+                        double d = is_float ? 0x1p-20 : 0x1p-45;
+                        if (is_float && h > 80) continue;
+                        /* up: the sun at the view's slope, just off it, low
+                         * and high; down: the sun at minus the slope, low */
+                        switch (il) {
+                        case 0: ly = wv[iw]; break;
+                        case 1: ly = wv[iw] * (1 + d); break;
+                        case 2: ly = wv[iw] * (1 - d); break;
+                        case 3: ly = 0.05; break;
+                        case 4: ly = 1e-3; break;
+                        case 5: ly = wv[iw]; break;
+                        default: ly = 0.05; break;
+                        }
+                        if (ly > 1) continue;
+                        /* (a low sun and a steep view up: nu = 1 - w/l_y down
+                         * to -19 here; further only costs reference time) */
+                        if ((il == 4 && wv[iw] > 1e-3) || (il == 3 && wv[iw] > 0.5)) continue;
+                        grid_point(is_float, Hs[iH], h, w, sm[is] * Hs[iH], ly, &wo, "sun");
+                    }
+    printf("dimmed sun %s: worst %.2f eps (1 + tau + sun depth)  (%.1f s)\n",
+           is_float ? "float" : "double", wo.Ls, (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
+/* The sun below the horizon with extinction gives no sun light; without
+ * extinction the sun term is the phase-weighted ambient integral. */
+static void test_sun_cases(void)
+{
+    mist_hfog f;
+    mist_vec3 o, d;
+    mist_rgb l1, l2, l3;
+    double u;
+    memset(&f, 0, sizeof f);
+    f.density = 1; f.scale_height = 100;
+    f.rayleigh_scat.r = f.rayleigh_ext.r = 0.01;
+    f.mie_scat.r = 0.02; f.mie_ext.r = 0.03;
+    f.mie_phase = mist_fog_make(0.7, 0, 0, 0);
+    o.x = 0; o.y = 20; o.z = 0;
+    d.x = 0.8; d.y = 0.6; d.z = 0;
+    f.sun.r = 2;
+    f.sun_dir.x = 0.6; f.sun_dir.y = -0.8; f.sun_dir.z = 0;
+    f.sun_extinction = 1;
+    l1 = mist_hfog_inscatter(&f, o, d, 500);
+    f.sun_dir.y = 0; f.sun_dir.x = 1;
+    l2 = mist_hfog_inscatter(&f, o, d, 500);
+    mt_check(l1.r == 0 && l2.r == 0, "sun at or below the horizon, dimmed: no sun light (%g %g)",
+             l1.r, l2.r);
+    f.sun_extinction = 0;
+    f.sun_dir.x = 0.6; f.sun_dir.y = -0.8;
+    l3 = mist_hfog_inscatter(&f, o, d, 500);
+    f.sun.r = 0; f.ambient.r = 1;
+    l1 = mist_hfog_inscatter(&f, o, d, 500);
+    u = 0.6 * 0.8 - 0.8 * 0.6;
+    /* ambient: (sR + sM) I; sun: E (sR pR + sM pM) I, the same I */
+    mt_check(fabs(l3.r - 2 * (0.01 * mist_rayleigh_eval(u) + 0.02 * mist_fog_eval(f.mie_phase, u))
+                  / 0.03 * l1.r) <= 1e-15 * l3.r,
+             "undimmed sun = phase-weighted ambient: %.17g", l3.r);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Several layers                                                           */
+/* ------------------------------------------------------------------------ */
+
+static mist_hfog layer(double base, double dens, double H, double r0, double r1, double r2,
+                       double m0, double m1, double m2, double mie_albedo, double g)
+{
+    mist_hfog f;
+    memset(&f, 0, sizeof f);
+    f.base = base; f.density = dens; f.scale_height = H;
+    f.rayleigh_scat.r = f.rayleigh_ext.r = r0;
+    f.rayleigh_scat.g = f.rayleigh_ext.g = r1;
+    f.rayleigh_scat.b = f.rayleigh_ext.b = r2;
+    f.mie_ext.r = m0; f.mie_ext.g = m1; f.mie_ext.b = m2;
+    f.mie_scat.r = m0 * mie_albedo; f.mie_scat.g = m1 * mie_albedo; f.mie_scat.b = m2 * mie_albedo;
+    f.mie_phase = mist_fog_make(g, 0, 0, 0);
+    return f;
+}
+
+static double ml_worst_ratio = 0, ml_worst_T = 0, ml_tight = 0;
+static int ml_checked = 0, ml_nrel = 0;
+static double ml_rel[4096];
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* layers against the reference: T to the bar; |L - ref| <= bound */
+static void ml_case(const mist_hfog *ly, int nl, double y, double w, double s, const int *pcs,
+                    int npcs, const char *what)
+{
+    int ip, pieces;
+    ref_t r;
+    mist_vec3 o, d, l;
+    mist_rgb T, L, B;
+    int k, c;
+    double wx = sqrt((1 - w) * (1 + w)), u;
+    memset(&r, 0, sizeof r);
+    r.nl = nl; r.nsig = 3; r.y = y; r.w = w;
+    l = ly[0].sun_dir;
+    r.ly = ly[0].sun_extinction ? l.y : 0;
+    for (k = 0; k < nl; ++k) {
+        r.lyb[k] = ly[k].base; r.lH[k] = ly[k].scale_height; r.ld0[k] = ly[k].density;
+        r.lst[k][0] = (LD)ly[k].rayleigh_ext.r + ly[k].mie_ext.r;
+        r.lst[k][1] = (LD)ly[k].rayleigh_ext.g + ly[k].mie_ext.g;
+        r.lst[k][2] = (LD)ly[k].rayleigh_ext.b + ly[k].mie_ext.b;
+    }
+    ref_run(&r, s);
+    o.x = 0; o.y = y; o.z = 0;
+    d.x = wx; d.y = w; d.z = 0;
+    u = l.x * d.x + l.y * d.y + l.z * d.z;
+    for (ip = 0; ip < npcs; ++ip) {
+    pieces = pcs[ip];
+    mist_hfog_layers_eval(ly, nl, o, d, s, pieces, &T, &L, &B);
+    for (c = 0; c < 3; ++c) {
+        double got_T = c == 0 ? T.r : (c == 1 ? T.g : T.b);
+        double got_L = c == 0 ? L.r : (c == 1 ? L.g : L.b);
+        double bnd = c == 0 ? B.r : (c == 1 ? B.g : B.b);
+        LD tau = 0, Lref = 0, Tref, err, e;
+        for (k = 0; k < nl; ++k) {
+            double sR = c == 0 ? ly[k].rayleigh_scat.r : (c == 1 ? ly[k].rayleigh_scat.g : ly[k].rayleigh_scat.b);
+            double sM = c == 0 ? ly[k].mie_scat.r : (c == 1 ? ly[k].mie_scat.g : ly[k].mie_scat.b);
+            double La = c == 0 ? ly[0].ambient.r : (c == 1 ? ly[0].ambient.g : ly[0].ambient.b);
+            double E = c == 0 ? ly[0].sun.r : (c == 1 ? ly[0].sun.g : ly[0].sun.b);
+            LD ssun = (LD)sR * mist_rayleigh_eval(u) + (LD)sM * mist_fog_eval(ly[k].mie_phase, u);
+            tau += r.lst[k][c] * r.Ck[k];
+            Lref += (LD)La * ((LD)sR + sM) * r.Il[k][c];
+            if (r.lst[k][c] > 0 || sR + sM > 0)
+                Lref += (LD)E * ssun * (ly[0].sun_extinction ? (l.y > 0 ? r.Isl[k][c] : 0) : r.Il[k][c]);
+        }
+        Tref = r.stopped ? 0 : expl(-tau);
+        if (r.stopped) tau = 900;
+        e = rel_units(got_T, Tref, 0x1p-53, tau, DBL_MIN / 0x1p-53);
+        if (e > ml_worst_T) ml_worst_T = (double)e;
+        mt_check(e <= BAR, "%s layers T (y=%g w=%g s=%g ch %d): %.17g ref %.17Lg (%.2f)", what, y, w, s,
+                 c, got_T, Tref, (double)e);
+        /* the reference is good to ~1e-17 relative: allowed on top */
+        err = fabsl((LD)got_L - Lref);
+        mt_check(err <= bnd + 1e-17L * fabsl(Lref) + 1e-300L && bnd >= 0 && got_L == got_L,
+                 "%s layers L within bound (y=%g w=%g s=%g pieces %d ch %d): %.17g ref %.17Lg, "
+                 "error %.3Lg > bound %.3g", what, y, w, s, pieces, c, got_L, Lref, err, bnd);
+        if (bnd > 0 && err / bnd > ml_worst_ratio) ml_worst_ratio = (double)(err / bnd);
+        if (Lref > 1e-300L && pieces == 8 && bnd / Lref > ml_tight) ml_tight = (double)(bnd / Lref);
+        if (Lref > 1e-300L && pieces == 8 && ml_nrel < 4096) ml_rel[ml_nrel++] = (double)(bnd / Lref);
+        ++ml_checked;
+    }
+    }
+}
+
+static void test_layers(void)
+{
+    /* Earth-like: Rayleigh 8 km and Mie 1.2 km (coefficients per metre) */
+    mist_hfog atm[3];
+    static const double ys[] = { 0, 500, 5000, 30000 };
+    static const double wl[] = { -1, -0.5, -0.1, -1e-3, 0, 1e-3, 0.1, 0.5, 1 };
+    static const double sl[] = { 1e3, 1e5, INFINITY };
+    static const int pcs[] = { 1, 4, 8, 32 }, p8 = 8;
+    size_t iy, iw, is;
+    clock_t t0 = clock();
+    int sx;
+    for (sx = 0; sx < 2; ++sx) {
+        atm[0] = layer(0, 1, 8000, 5.8e-6, 13.5e-6, 33.1e-6, 0, 0, 0, 0.9, 0);
+        atm[1] = layer(0, 1, 1200, 0, 0, 0, 2.2e-5, 2.2e-5, 2.2e-5, 0.9, 0.76);
+        atm[0].sun_dir.x = cos(0.1745); atm[0].sun_dir.y = sin(0.1745); atm[0].sun_dir.z = 0;
+        atm[0].sun.r = atm[0].sun.g = atm[0].sun.b = 10;
+        atm[0].ambient.r = 0.2; atm[0].ambient.g = 0.3; atm[0].ambient.b = 0.5;
+        atm[0].sun_extinction = sx;
+        for (iy = 0; iy < 4; ++iy)
+            for (iw = 0; iw < sizeof wl / sizeof *wl; ++iw)
+                for (is = 0; is < 3; ++is)
+                    ml_case(atm, 2, ys[iy], wl[iw], sl[is], pcs, 4, sx ? "earth (dimmed sun)" : "earth");
+    }
+    /* three artist layers: a thick ground fog (H 10 m), a haze (300 m), a
+     * high thin layer (2 km) above its base at 1 km */
+    atm[0] = layer(0, 1, 10, 0, 0, 0, 0.02, 0.03, 0.05, 0.8, 0.5);
+    atm[1] = layer(0, 1, 300, 1e-5, 2e-5, 4e-5, 5e-4, 5e-4, 5e-4, 0.95, 0.3);
+    atm[2] = layer(1000, 0.5, 2000, 0, 0, 0, 1e-4, 1e-4, 1e-4, 1, 0.8);
+    atm[0].sun_dir.x = 0.6; atm[0].sun_dir.y = 0.8; atm[0].sun_dir.z = 0;
+    atm[0].sun.r = atm[0].sun.g = atm[0].sun.b = 3;
+    atm[0].ambient.r = atm[0].ambient.g = atm[0].ambient.b = 0.5;
+    for (sx = 0; sx < 2; ++sx) {
+        static const double ya[] = { 1, 30, 800 };
+        atm[0].sun_extinction = sx;
+        for (iy = 0; iy < 3; ++iy)
+            for (iw = 0; iw < sizeof wl / sizeof *wl; ++iw)
+                for (is = 0; is < 3; ++is)
+                    ml_case(atm, 3, ya[iy], wl[iw], sl[is] / 10, &p8, 1, "artist");
+    }
+    qsort(ml_rel, (size_t)ml_nrel, sizeof *ml_rel, cmp_d);
+    printf("layers: %d in-scatter values within their bound (worst error/bound %.3f); with 8 "
+           "pieces the bound is %.2g of the value (median), %.2g (90%%), %.2g (max); "
+           "transmittance worst %.2f eps (1 + tau)  (%.1f s)\n",
+           ml_checked, ml_worst_ratio, ml_rel[ml_nrel / 2], ml_rel[ml_nrel * 9 / 10], ml_tight,
+           ml_worst_T, (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
+/* ------------------------------------------------------------------------ */
+/* The linear-extinction step (beyond [I18], after Bouthors et al. 2008)    */
+/* ------------------------------------------------------------------------ */
+
+/* reference: int_0^1 t^j e^-tau(t) dt (j = 0: W0's 1 - t, j = 1: W1's t),
+ * tau(t) = int_0^t kappa, kappa linear from p to q, by 2-point
+ * Gauss-Legendre (exact for a linear kappa) inside adaptive GK15 */
+typedef struct { LD p, q; int j; } seg_ref_t;
+
+static LD seg_f(const seg_ref_t *c, LD t)
+{
+    /* tau(t) = t/2 (kappa(t (1 - 1/sqrt3)/2) + kappa(t (1 + 1/sqrt3)/2)) */
+    LD r3 = 0.577350269189625764509148780501957456L, a = t * (1 - r3) / 2, b = t * (1 + r3) / 2;
+    LD tau = t / 2 * ((c->p + (c->q - c->p) * a) + (c->p + (c->q - c->p) * b));
+    return (c->j ? t : 1 - t) * expl(-tau);
+}
+
+static LD seg_adapt(const seg_ref_t *c, LD a, LD b, LD *acc, int depth)
+{
+    LD m = (a + b) / 2, h = (b - a) / 2, fk, fg, fm = seg_f(c, m);
+    int i;
+    fk = rk_wk[7] * fm; fg = rk_wg[3] * fm;
+    for (i = 0; i < 7; ++i) {
+        LD s = seg_f(c, m - h * rk_x[i]) + seg_f(c, m + h * rk_x[i]);
+        fk += rk_wk[i] * s;
+        if (i & 1) fg += rk_wg[i / 2] * s;
+    }
+    fk *= h; fg *= h;
+    if (depth <= 0 || fabsl(fk - fg) <= 2e-19L * fabsl(fk) + 1e-22L * *acc + 1e-4000L) {
+        *acc += fk;
+        return fk;
+    }
+    return seg_adapt(c, a, m, acc, depth - 1) + seg_adapt(c, m, b, acc, depth - 1);
+}
+
+static LD seg_ref(LD p, LD q, int j)
+{
+    seg_ref_t c;
+    LD acc = 0, sum = 0, a = 0, b;
+    c.p = p; c.q = q; c.j = j;
+    /* graded pieces [0, 2^-k] first: the boundary layer at 0 has width
+     * ~ 1/p or 1/sqrt(q - p) */
+    for (b = 0x1p-60L; ; b *= 4) {
+        if (b > 1) b = 1;
+        sum += seg_adapt(&c, a, b, &acc, 60);
+        a = b;
+        if (b >= 1) break;
+    }
+    return sum;
+}
+
+static void test_segment(int is_float)
+{
+    static const double ps[] = { 0, 1e-300, 1e-15, 1e-8, 1e-3, 0.1, 0.7, 1.2, 1.5, 1.6, 2, 2.9, 3.1,
+                                 5, 8.5, 20, 100, 1e3, 1e5, 1e8 };
+    static const double lens[] = { 1, 37.5, 1e-3 };
+    double worst[2] = { 0, 0 }, eps = is_float ? 0x1p-24 : 0x1p-53;
+    size_t ip, iq, il, np = sizeof ps / sizeof *ps;
+    int near;
+    mt_rng rng = { 77 };
+    clock_t t0 = clock();
+    for (il = 0; il < 3; ++il)
+        for (ip = 0; ip < np + 40; ++ip)
+            for (iq = 0; iq < (ip < np ? np + 6 : 40); ++iq) {
+                double len = lens[il], p, q, k0, k1, got[2], tr;
+                LD P, Q, ref[2], t1;
+                int j;
+                near = ip < np && iq >= np;
+                if (ip >= np) {   /* random, log-uniform over [1e-2, 1e3] */
+                    p = pow(10, -2 + 5 * mt_uniform(&rng));
+                    q = pow(10, -2 + 5 * mt_uniform(&rng));
+                } else if (!near) p = ps[ip], q = ps[iq];
+                else {   /* nearly constant extinction */
+                    static const double rel[] = { 1e-12, -1e-12, 1e-6, -1e-6, 1e-2, -1e-2 };
+                    p = ps[ip];
+                    q = p * (1 + rel[iq - np]);
+                }
+                k0 = p / len; k1 = q / len;
+                if (is_float) {
+                    float kf0 = (float)k0, kf1 = (float)k1, lf = (float)len, tf;
+                    if (kf0 > FLT_MAX || kf1 > FLT_MAX) continue;
+                    got[0] = mist_segment_linearf(kf0, kf1, 1, 0, lf, &tf);
+                    got[1] = mist_segment_linearf(kf0, kf1, 0, 1, lf, &tf);
+                    tr = tf;
+                    P = (LD)kf0 * lf; Q = (LD)kf1 * lf; len = lf;
+                } else {
+                    got[0] = mist_segment_linear(k0, k1, 1, 0, len, &tr);
+                    got[1] = mist_segment_linear(k0, k1, 0, 1, len, &tr);
+                    P = (LD)k0 * len; Q = (LD)k1 * len;
+                }
+                ref[0] = seg_ref(P, Q, 0) * len;
+                ref[1] = seg_ref(P, Q, 1) * len;
+                t1 = (P + Q) / 2;
+                for (j = 0; j < 2; ++j) {
+                    double e = (double)(fabsl(got[j] - ref[j]) / (eps * ref[j] + (is_float ? FLT_MIN : DBL_MIN)));
+                    if (e > worst[j]) worst[j] = e;
+                    mt_check(e <= SEG_BAR, "segment %s p=%.17g q=%.17g len=%g: W%d %.17g ref %.17Lg (%.2f eps)",
+                             is_float ? "float" : "double", (double)P, (double)Q, len, j, got[j], ref[j], e);
+                }
+                mt_check(fabsl(tr - expl(-t1)) <= 4 * eps * (1 + t1) * expl(-t1) + (LD)(is_float ? FLT_MIN : DBL_MIN),
+                         "segment %s transmittance p=%g q=%g: %.17g ref %.17Lg", is_float ? "float" : "double",
+                         (double)P, (double)Q, tr, expl(-t1));
+            }
+    {   /* no extinction: the trapezoid rule, exactly; sources of any sign */
+        double t;
+        mt_check(mist_segment_linear(0, 0, 3, 5, 2, &t) == 8 && t == 1 &&
+                 mist_segment_linearf(0, 0, 3, 5, 2, (float *)0) == 8,
+                 "segment without extinction is the trapezoid rule");
+        mt_check(fabs(mist_segment_linear(0.3, 2, 1, -1, 1.7, &t)
+                      - (mist_segment_linear(0.3, 2, 1, 0, 1.7, &t) - mist_segment_linear(0.3, 2, 0, 1, 1.7, &t)))
+                 <= 1e-15, "segment is linear in the source");
+    }
+    printf("segment %s: worst W0 %.2f eps, W1 %.2f eps  (%.1f s)\n", is_float ? "float" : "double",
+           worst[0], worst[1], (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Bad input: the documented results (section comment in include/mist.h)   */
+/* ------------------------------------------------------------------------ */
+
+static mist_hfog good_fog(void)
+{
+    mist_hfog f = layer(5, 0.8, 120, 1e-3, 2e-3, 4e-3, 5e-3, 5e-3, 5e-3, 0.9, 0.6);
+    f.sun_dir.x = 0.6; f.sun_dir.y = 0.8; f.sun_dir.z = 0;
+    f.sun.r = f.sun.g = f.sun.b = 2;
+    f.ambient.r = f.ambient.g = f.ambient.b = 0.3;
+    f.sun_extinction = 1;
+    return f;
+}
+
+static int same_rgb(mist_rgb a, mist_rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+static int is_none(mist_rgb t, mist_rgb l)
+{
+    return t.r == 1 && t.g == 1 && t.b == 1 && l.r == 0 && l.g == 0 && l.b == 0;
+}
+
+static void test_bad(void)
+{
+    mist_hfog f = good_fog(), g;
+    mist_vec3 o, d, z;
+    mist_rgb t, l, t2, l2;
+    double nan = NAN;
+    int k;
+    o.x = 1; o.y = 30; o.z = 2;
+    d.x = 0.8; d.y = -0.6; d.z = 0;
+    z.x = z.y = z.z = 0;
+    /* no fog: density NaN / <= 0, H NaN / <= 0, base or origin not finite,
+     * length NaN / <= 0, a NULL fog */
+    for (k = 0; k < 11; ++k) {
+        double len = 500;
+        g = f; o.y = 30;
+        switch (k) {
+        case 0: g.density = nan; break;
+        case 1: g.density = -1; break;
+        case 2: g.scale_height = nan; break;
+        case 3: g.scale_height = 0; break;
+        case 4: g.scale_height = -50; break;
+        case 5: g.base = INFINITY; break;
+        case 6: o.y = nan; break;
+        case 7: len = nan; break;
+        case 8: len = -1; break;
+        case 9: len = 0; break;
+        default: break;
+        }
+        mist_hfog_eval(k == 10 ? (const mist_hfog *)0 : &g, o, d, len, &t, &l);
+        mt_check(is_none(t, l), "bad input %d: no fog (T 1, L 0): %g %g", k, t.r, l.r);
+        mt_check(mist_hfog_column(k == 10 ? (const mist_hfog *)0 : &g, o.y, -0.6, len) == 0,
+                 "bad input %d: column 0", k);
+    }
+    o.y = 30;
+    /* negative and NaN coefficients and radiances count as 0 */
+    g = f;
+    g.rayleigh_scat.r = -1; g.rayleigh_ext.r = nan; g.mie_scat.g = nan; g.sun.b = -3; g.ambient.b = nan;
+    mist_hfog_eval(&g, o, d, 500, &t, &l);
+    g.rayleigh_scat.r = 0; g.rayleigh_ext.r = 0; g.mie_scat.g = 0; g.sun.b = 0; g.ambient.b = 0;
+    mist_hfog_eval(&g, o, d, 500, &t2, &l2);
+    mt_check(same_rgb(t, t2) && same_rgb(l, l2), "negative / NaN coefficients are 0");
+    /* extinction below scattering is raised to it */
+    g = f; g.mie_ext.r = 0;
+    mist_hfog_eval(&g, o, d, 500, &t, &l);
+    g.mie_ext.r = g.mie_scat.r;
+    mist_hfog_eval(&g, o, d, 500, &t2, &l2);
+    mt_check(same_rgb(t, t2) && same_rgb(l, l2), "extinction raised to scattering");
+    /* zero extinction: T = 1, no in-scatter, not NaN */
+    g = f;
+    memset(&g.rayleigh_scat, 0, sizeof g.rayleigh_scat); g.rayleigh_ext = g.rayleigh_scat;
+    g.mie_scat = g.rayleigh_scat; g.mie_ext = g.rayleigh_scat;
+    for (k = 0; k < 4; ++k) {
+        static const double lens[] = { 1, 1e6, INFINITY, 1e300 };
+        mist_hfog_eval(&g, o, d, lens[k], &t, &l);
+        mt_check(is_none(t, l), "zero extinction, length %g: T 1, L 0", lens[k]);
+    }
+    /* a zero, NaN or infinite direction is (0, 0, 1): a level ray; a
+     * non-unit one is normalised */
+    {
+        mist_vec3 lv, dn, di;
+        lv.x = 0; lv.y = 0; lv.z = 1;
+        dn.x = nan; dn.y = 1; dn.z = 0;
+        di.x = INFINITY; di.y = 0; di.z = 0;
+        mist_hfog_eval(&f, o, lv, 500, &t2, &l2);
+        mist_hfog_eval(&f, o, z, 500, &t, &l);
+        mt_check(same_rgb(t, t2) && same_rgb(l, l2), "zero direction is (0, 0, 1)");
+        mist_hfog_eval(&f, o, dn, 500, &t, &l);
+        mt_check(same_rgb(t, t2) && same_rgb(l, l2), "NaN direction is (0, 0, 1)");
+        mist_hfog_eval(&f, o, di, 500, &t, &l);
+        mt_check(same_rgb(t, t2) && same_rgb(l, l2), "infinite direction is (0, 0, 1)");
+        dn.x = 8; dn.y = -6; dn.z = 0;
+        mist_hfog_eval(&f, o, dn, 500, &t, &l);
+        mist_hfog_eval(&f, o, d, 500, &t2, &l2);
+        mt_check(fabs(t.r - t2.r) <= 1e-15 && fabs(l.g - l2.g) <= 1e-15 * l2.g,
+                 "non-unit direction normalised");
+        /* a zero sun direction is (0, 0, 1): on the horizon, dimmed: no sun */
+        g = f; g.sun_dir = z; g.ambient.r = g.ambient.g = g.ambient.b = 0;
+        l = mist_hfog_inscatter(&g, o, d, 500);
+        mt_check(l.r == 0 && l.g == 0 && l.b == 0, "zero sun direction, dimmed: no sun light");
+    }
+    /* H = +inf is the uniform fog: T = exp(-ext density length) */
+    g = f; g.scale_height = INFINITY;
+    t = mist_hfog_transmittance(&g, o, d, 500);
+    mt_check(fabs(t.r - exp(-(1e-3 + 5e-3) * 0.8 * 500)) <= 1e-15, "uniform fog: %.17g", t.r);
+    /* apply = background T + L */
+    {
+        mist_rgb bg, a;
+        bg.r = 3; bg.g = 4; bg.b = 5;
+        a = mist_hfog_apply(&f, o, d, 500, bg);
+        mist_hfog_eval(&f, o, d, 500, &t, &l);
+        mt_check(a.r == 3 * t.r + l.r && a.b == 5 * t.b + l.b, "apply");
+    }
+    /* layers: NULL, n < 1: nothing; a bad layer is skipped */
+    {
+        mist_hfog ly[2];
+        mist_rgb b;
+        mist_hfog_layers_eval((const mist_hfog *)0, 2, o, d, 500, 8, &t, &l, &b);
+        mt_check(is_none(t, l) && b.r == 0, "layers NULL");
+        mist_hfog_layers_eval(&f, 0, o, d, 500, 8, &t, &l, &b);
+        mt_check(is_none(t, l) && b.r == 0, "layers n = 0");
+        ly[0] = f; ly[1] = f; ly[1].scale_height = -3;
+        mist_hfog_layers_eval(ly, 2, o, d, 500, 8, &t, &l, &b);
+        mist_hfog_eval(&f, o, d, 500, &t2, &l2);
+        mt_check(fabs(t.r - t2.r) <= 1e-15 && fabs(l.r - l2.r) <= 1e-14 * l2.r,
+                 "layers: a bad layer is skipped (%.17g %.17g)", l.r, l2.r);
+        /* equal scale heights: one exponential, exact (bound ~ rounding) */
+        ly[1] = f; ly[1].base = 40; ly[1].density = 2.5;
+        mist_hfog_layers_eval(ly, 2, o, d, 500, 8, &t, &l, &b);
+        g = f; g.density = 0.8 + 2.5 * exp(35.0 / 120);   /* the same exponential */
+        mist_hfog_eval(&g, o, d, 500, &t2, &l2);
+        mt_check(fabs(t.r - t2.r) <= 1e-14 * t2.r && fabs(l.g - l2.g) <= 1e-13 * l2.g
+                 && b.g <= 1e-13 * l2.g, "layers of one scale height: exact (%.17g %.17g, bound %g)",
+                 l.g, l2.g, b.g);
+    }
+    /* segment */
+    {
+        double tr;
+        mt_check(mist_segment_linear(nan, -2, 1, 1, 2, &tr) == 2 && tr == 1, "segment NaN/negative k");
+        mt_check(mist_segment_linear(1, 1, nan, 1, 2, &tr) == mist_segment_linear(1, 1, 0, 1, 2, &tr),
+                 "segment NaN source");
+        mt_check(mist_segment_linear(1, 1, 1, 1, nan, &tr) == 0 && tr == 1 &&
+                 mist_segment_linear(1, 1, 1, 1, -3, &tr) == 0 && tr == 1, "segment bad length");
+        mt_check(mist_segment_linear(2, 7, 3, 1, INFINITY, &tr) == 1.5 && tr == 0, "segment length inf");
+    }
+    /* no NaN, T in [0, 1], L >= 0 for any finite input (extremes included) */
+    {
+        static const double ex[] = { 0, 1e-310, 1e-200, 1e-20, 1e-3, 0.5, 1, 3, 1e3, 1e20, 1e200, 1e308 };
+        mt_rng rng = { 99 };
+        int bad = 0;
+        for (k = 0; k < 20000; ++k) {
+            double v[12];
+            int j;
+            for (j = 0; j < 12; ++j) v[j] = ex[mt_next(&rng) % 12] * ((mt_next(&rng) & 1) && j < 3 ? -1 : 1);
+            g = f;
+            g.base = v[0]; g.density = v[3]; g.scale_height = v[4];
+            g.rayleigh_ext.r = v[5]; g.mie_ext.g = v[6]; g.mie_scat.b = v[7]; g.rayleigh_scat.r = v[8];
+            g.sun_dir.y = v[2]; g.sun_extinction = (int)(k & 1);
+            o.y = v[1];
+            d.x = v[9]; d.y = (mt_next(&rng) & 1) ? v[10] : -v[10]; d.z = 0;
+            mist_hfog_eval(&g, o, d, v[11], &t, &l);
+            if (!(t.r >= 0 && t.r <= 1 && t.g >= 0 && t.g <= 1 && t.b >= 0 && t.b <= 1 &&
+                  l.r >= 0 && l.g >= 0 && l.b >= 0)) {
+                if (++bad <= 5) printf("  fuzz %d: T %g %g %g L %g %g %g\n", k, t.r, t.g, t.b, l.r, l.g, l.b);
+            }
+            if (k % 4 == 0) {
+                mist_hfog ly[2];
+                mist_rgb b;
+                double tr, sg;
+                ly[0] = f; ly[1] = g;
+                mist_hfog_layers_eval(ly, 2, o, d, v[11], (int)(k % 40), &t, &l, &b);
+                if (!(t.r >= 0 && t.r <= 1 && t.g >= 0 && t.b <= 1 && l.r >= 0 && l.g >= 0 &&
+                      l.b >= 0 && b.r >= 0 && b.g >= 0 && b.b >= 0)) {
+                    if (++bad <= 5) printf("  fuzz layers %d: T %g L %g %g %g B %g %g %g\n", k, t.r,
+                                           l.r, l.g, l.b, b.r, b.g, b.b);
+                }
+                sg = mist_segment_linear(v[5], v[6], v[7], v[8], v[11], &tr);
+                if (!(sg >= 0 && tr >= 0 && tr <= 1)) {
+                    if (++bad <= 5) printf("  fuzz segment %d: %g %g\n", k, sg, tr);
+                }
+            }
+        }
+        mt_check(bad == 0, "finite input: no NaN, T in [0, 1], L >= 0 (%d bad)", bad);
+    }
+}
+
+/* Without arguments every part runs; "test_height_fog NAME..." runs only
+ * the parts named (grid, layers, ...), for work on one of them. */
+static int want(int argc, char **argv, const char *name)
+{
+    int i;
+    if (argc < 2) return 1;
+    for (i = 1; i < argc; ++i) if (!strcmp(argv[i], name)) return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    gl_init();
+    ref_tol = 4e-18L;
+    if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
+    if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); }
+    if (want(argc, argv, "layers")) test_layers();
+    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); }
+    if (want(argc, argv, "bad")) test_bad();
+    return mt_done("test_height_fog");
+}
