@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""regress.py - writes the regression inputs of the fuzz corpus:
+fuzz/corpus/<harness>/regress-<name>, one per failure found (see the
+input format at the top of each fuzz/fuzz_<harness>.c).  Each case names
+the invariant it broke when it was found; fuzz/replay.c runs them all
+(ctest: fuzz_replay_<harness>).  Run from anywhere: python3 fuzz/regress.py
+"""
+import math
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RAW = struct.pack('<Q', 14)            # mi_gen recipe 14: the value's raw bits
+
+
+def d(x):
+    return struct.pack('<d', float.fromhex(x) if isinstance(x, str) else x)
+
+
+def f(x):
+    return struct.pack('<f', float.fromhex(x) if isinstance(x, str) else x)
+
+
+def phase(op, typ, *args):
+    """a fuzz_phase record: op, then g, alpha, x, x2 (each: a 64-bit word
+    picking the recipe 'raw bits', then a 64-bit word of bits)"""
+    enc = d if typ == 'd' else (lambda x: f(x) + bytes(4))
+    out = bytes([op << 1 | (typ == 'f')])
+    for a in args:
+        out += RAW + enc(a)
+    return out
+
+
+HFOG_DEFAULT = dict(base=10.0, density=0.5, H=100.0,
+                    rs=(0.01, 0.02, 0.04), re=(0.01, 0.02, 0.04),
+                    ms=(0.05, 0.05, 0.05), me=(0.06, 0.06, 0.06),
+                    mie=(0.8, 0.5, 20.0, 0.4), sun_dir=(0.6, 0.48, 0.64),
+                    sun=(5.0, 5.0, 5.0), ambient=(1.0, 1.0, 1.0), sun_ext=0,
+                    origin=(1.0, 10.0, 2.0), dir=(1.0, 0.0, 0.0), length=1000.0,
+                    bg=(0.5, 0.5, 0.5), w=0.0)
+
+
+def hfog(typ, **kw):
+    """a direct fuzz_hfog record: every field's bits in struct order"""
+    v = dict(HFOG_DEFAULT)
+    v.update(kw)
+    enc = d if typ == 'd' else f
+    out = bytes([2 | (typ == 'f')])
+    for x in ([v['base'], v['density'], v['H']] + list(v['rs']) + list(v['re'])
+              + list(v['ms']) + list(v['me']) + list(v['mie']) + list(v['sun_dir'])
+              + list(v['sun']) + list(v['ambient'])):
+        out += enc(x)
+    out += bytes([v['sun_ext'] & 0xff])
+    for x in list(v['origin']) + list(v['dir']) + [v['length']] + list(v['bg']) + [v['w']]:
+        out += enc(x)
+    return out
+
+
+def down(w):
+    """a unit direction with vertical component w"""
+    return (math.sqrt(1 - w * w), w, 0.0)
+
+
+def sweep(typ, g, alpha, ks):
+    """fuzz_phase records of mist_draine_sample at (g, alpha): xi pairs
+    (1/2 - s 2^-k, 1/2 - s 2^-(k+1)) on both sides of 1/2 (s = +-1), so that
+    whatever the compiler's rounding, some pair straddles a jump"""
+    out = b''
+    for k in ks:
+        for sgn in (1, -1):
+            out += phase(6, typ, g, alpha, 0.5 - sgn * 2.0**-k, 0.5 - sgn * 2.0**-(k + 1))
+    return out
+
+
+CASES = {
+    'phase': {
+        # the same, as sweeps of xi pairs at every scale down to the ulp
+        'draine-half-sweep-d': sweep('d', 2.0**-45, 1e20, range(2, 54))
+                               + sweep('d', 0.0, math.inf, range(2, 54))
+                               + sweep('d', 2.0**-40, 1e14, range(2, 54)),
+        'draine-half-sweep-f': sweep('f', 0.0, 1e8, range(2, 25))
+                               + sweep('f', 2.0**-23, math.inf, range(2, 25))
+                               + sweep('f', 2.0**-20, 1e6, range(2, 25)),
+        # after the fix of 87d4f1b, float still: alpha 1e5 .. 3e6, |g| < 2e-6:
+        # mist_draine_samplef(0, 2^20, 0x1.fffffep-2) = -0.0208 (F^-1 = -0.00366;
+        # -0.00473 one ulp of xi below)
+        'draine-half-f2': phase(6, 'f', 0.0, 2.0**20, '0x1.fffffcp-2', '0x1.fffffep-2'),
+        'draine-half-sweep-f2': sweep('f', 0.0, 2.0**20, range(2, 25))
+                                + sweep('f', 2.0**-27, 3e6, range(2, 25))
+                                + sweep('f', -2.0**-24, 3e5, range(2, 25))
+                                + sweep('f', 2.0**-22, 1e5, range(2, 25)),
+        # mist_draine_sample: small g, huge alpha, xi near 1/2: not monotone,
+        # u = 1 where F^-1 = 4.8e-6
+        'draine-half-d': phase(6, 'd', 2.0**-45, 1e20, '0x1.ffffffffffdcp-2',
+                               '0x1.ffffffffffdc1p-2'),
+        # g = 0, alpha = +inf: -0.296 at the xi below 1/2 (F^-1 = -4.8e-6)
+        'draine-half-inf-d': phase(6, 'd', 0.0, math.inf, '0x1.fffffffffffffp-2',
+                                   0.5 - 2.0**-40),
+        # float, g = 0, alpha = 1e8: -0.296 at 0x1.fffffep-2 (F^-1 = -0.0039)
+        'draine-half-f': phase(6, 'f', 0.0, 1e8, '0x1.fffffep-2', 0.5 - 2.0**-17),
+    },
+    'hfog': {
+        # column -inf (the exponent's low part (1 - xl) < 0 for |a| >= 2^53)
+        'col-neg-inf-d': hfog('d', H=1e-30, origin=(1.0, 10.0, 2.0), dir=down(-1e-12),
+                              w=-1e-12, length=1000.0),
+        # column NaN: looking down 1e300 through H = 1
+        'col-nan-d': hfog('d', H=1.0, origin=(1.0, 11.0, 2.0), dir=down(-0.5), w=-0.5,
+                          length=1e300),
+        # float column -0.0577: H = 3e-30, heights and the exponent cancel
+        'col-neg-f': hfog('f', base='-0x1.54e578p-60', density='0x1.d8b98p+9',
+                          H='0x1.365d66p-98', origin=(1.0, '0x1.f3fffep+9', 2.0),
+                          dir=(0.0, -1.0, 0.0), w='-0x1.0fd176p+27', length='0x1.f3fffcp+9'),
+        # column +inf, true 7.1e27: density * length overflows before the exponential
+        'col-overflow-d': hfog('d', base='0x1.4ff3e3a7bbbe8p+4', density='0x1.ffffffffffffep+1023',
+                               H='0x1.a9361018c4e55p+13', origin=(1.0, '0x1.0d367087ce97ap+23', 2.0),
+                               dir=(0.0, -1.0, 0.0), w='-0x1.ffffffffffffcp-1',
+                               length='0x1.ca9cd16ddb5c4p+3'),
+        # column 0, true 2.1e47: density * length underflows before the exponential
+        'col-underflow-d': hfog('d', base='0x1.cc63464cdab38p+5', density='0x0.0000000000001p-1022',
+                                H='0x1.4f905f0927ap-5', origin=(1.0, '0x1.6503da660c46p+4', 2.0),
+                                dir=down(float.fromhex('0x1.a23301ad0040cp-201')),
+                                w='0x1.a23301ad0040cp-201', length='0x1.29d41a30df3e5p-10'),
+        # length +inf, w = 1e-300: H / w overflows, column +inf and T = 0, true 1.8e-18, T = 1
+        'col-inf-len-d': hfog('d', H='0x1.93e5939a08ceap+99',
+                              origin=(1.0, '0x1.3b8b5b5056e17p+109', 2.0),
+                              dir=down(float.fromhex('0x1.56e1fc2f8f359p-997')),
+                              w='0x1.56e1fc2f8f359p-997', length=math.inf),
+        # H = FLT_MAX taken as +inf (uniform): column 0.70, true 0.276
+        'col-hmax-f': hfog('f', base='0x1.097dc4p+3', density='0x1.251f24p-6',
+                           H='0x1.fffffep+127', origin=(1.0, '0x1.dc4efap+127', 2.0),
+                           dir=down(-0.5), w='-0x1.fffffep-2', length='0x1.38d53cp+5'),
+        # in-scattering +inf, bound 152: ambient * sigma_s overflows (sigma_s = 1.8e308)
+        'ls-overflow-d': hfog('d', rs=('0x1.ffffffffffffep+1023', 0.02, 0.04),
+                              re=(100.0, 0.02, 0.04), ambient=(9.3, 1.0, 1.0),
+                              dir=(0.43, 0.72, -0.54), length=200.0),
+        # in-scattering NaN: sigma_t subnormal (1 / sigma_t overflows), ambient 0
+        'ls-nan-f': hfog('f', base='-0x1.b73738p+3', density='0x1.b36446p-5', H='0x1.dcdcdcp+93',
+                         rs=('0x1.fedcp-134', 0.0, 0.0), re=('0x1.fedcp-134', 0.0, 0.0),
+                         ms=(0.0, 0.0, 0.0), me=(0.0, 0.0, 0.0), sun_dir=(-1.0, 0.0, 0.0),
+                         sun=(0.1, 0.1, 0.1), ambient=(0.0, 0.0, 0.0),
+                         origin=(0.0, '-0x1.2a0a0ap+97', 0.0), dir=(-1.0, 0.0, 0.0),
+                         length=math.inf),
+    },
+}
+
+for harness, cases in CASES.items():
+    os.makedirs(os.path.join(HERE, 'corpus', harness), exist_ok=True)
+    for name, data in cases.items():
+        with open(os.path.join(HERE, 'corpus', harness, 'regress-' + name), 'wb') as fh:
+            fh.write(data)
+        print('fuzz/corpus/%s/regress-%s: %d bytes' % (harness, name, len(data)))

@@ -1,0 +1,27 @@
+#!/bin/sh
+# variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS TESTS
+# Configures, builds and tests a sub-build of the mist tree SRC in BIN with
+# the C compiler CC, CMAKE_C_FLAGS=FLAGS (build type "Variant": no other
+# optimisation flags) and MIST_VARIANTS=OFF (no recursion), then runs the
+# ctest tests whose names match the regular expression TESTS, with
+# MIST_STRESS_CALLS=STRESS_CALLS for the stress test.  Exits 77 (ctest:
+# skipped) with a message when CC cannot build and run a program with FLAGS
+# (e.g. no sanitizer runtime).
+set -u
+name=$1; src=$2; bin=$3; cc=$4; gen=$5; flags=$6; calls=$7; tests=$8
+mkdir -p "$bin" || exit 1
+probe="$bin/probe.c"
+printf '%s\n' '#include <math.h>' '#include <stdio.h>' \
+    'int main(void) { volatile double x = 2; printf("%g\n", sqrt(x)); return 0; }' > "$probe"
+if ! "$cc" $flags "$probe" -o "$bin/probe" -lm >/dev/null 2>&1 || ! "$bin/probe" >/dev/null 2>&1
+then
+    echo "variant $name: $cc cannot build and run with '$flags': test skipped"
+    exit 77
+fi
+echo "variant $name: $cc $flags"
+cmake -S "$src" -B "$bin" -G "$gen" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Variant \
+      -DCMAKE_C_FLAGS="$flags" -DMIST_BUILD_EXAMPLES=OFF -DMIST_VARIANTS=OFF >"$bin/configure.log" 2>&1 ||
+    { cat "$bin/configure.log"; exit 1; }
+cmake --build "$bin" -j 2 >"$bin/build.log" 2>&1 || { cat "$bin/build.log"; exit 1; }
+cd "$bin" || exit 1
+MIST_STRESS_CALLS=$calls ctest -R "$tests" -j 2 --output-on-failure
