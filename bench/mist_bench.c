@@ -8,6 +8,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include "mist.h"
 #include "mist_mie.h"
+#include "mist_printed.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,40 +28,6 @@ static double now(void)
     clock_gettime(CLOCK_MONOTONIC, &t);
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
-
-/* ---- baselines: the formulas as printed --------------------------------- */
-
-/* [JD23] eq. 2 */
-static float hg_eval_printed(float g, float u)
-{
-    return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f);
-}
-
-/* [JD23] eq. 3, with the eq. 4 isotropic fallback */
-static float hg_sample_printed(float g, float xi)
-{
-    float t;
-    if (fabsf(g) < 1e-3f) return 2 * xi - 1;
-    t = (1 - g * g) / (1 - g + 2 * g * xi);
-    return (1 + g * g - t * t) / (2 * g);
-}
-
-/* [JD23] eq. 6, typed in as printed */
-#define EQ6(T, SQRT, CBRT)                                                     \
-    T t0 = alpha - alpha * g * g;                                              \
-    T t1 = alpha * g * g * g * g - alpha;                                      \
-    T t2 = -3 * (4 * (g * g * g * g - g * g) + t1 * (1 + g * g));              \
-    T t3 = g * (2 * xi - 1);                                                   \
-    T t4 = 3 * g * g * (1 + t3) + alpha * (2 + g * g * (1 + (1 + 2 * g * g) * t3)); \
-    T t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;                            \
-    T t6 = t0 * 4 * (g * g * g * g - g * g);                                   \
-    T t7 = CBRT(t5 + SQRT(t5 * t5 - t6 * t6 * t6));                            \
-    T t8 = 2 * (t1 + t6 / t7 + t7) / t0;                                       \
-    T t9 = SQRT(6 * (1 + g * g) + t8);                                         \
-    T w = SQRT(6 * (1 + g * g) - t8 + 8 * t4 / (t0 * t9)) - t9;                \
-    return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
-static float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrtf) }
-static double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
 
 /* ---- timing ------------------------------------------------------------- */
 

@@ -60,6 +60,7 @@
 #include "mist_mie.h"
 #include "mist_fitref.h"
 #include "mist_ref.h"
+#include "mist_printed.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,23 +144,6 @@ static double xlf_eval(double g, double u)
     double r = 1.5 * ((1 - g2) / (2 + g2)) * ((1 + u * u) / denom) + g * u;
     return 1.0 / (4.0 * PI) * r;
 }
-
-/* [JD23] eq. 6, typed in as printed (the same text as bench/mist_bench.c) */
-#define EQ6(T, SQRT, CBRT)                                                     \
-    T t0 = alpha - alpha * g * g;                                              \
-    T t1 = alpha * g * g * g * g - alpha;                                      \
-    T t2 = -3 * (4 * (g * g * g * g - g * g) + t1 * (1 + g * g));              \
-    T t3 = g * (2 * xi - 1);                                                   \
-    T t4 = 3 * g * g * (1 + t3) + alpha * (2 + g * g * (1 + (1 + 2 * g * g) * t3)); \
-    T t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;                            \
-    T t6 = t0 * 4 * (g * g * g * g - g * g);                                   \
-    T t7 = CBRT(t5 + SQRT(t5 * t5 - t6 * t6 * t6));                            \
-    T t8 = 2 * (t1 + t6 / t7 + t7) / t0;                                       \
-    T t9 = SQRT(6 * (1 + g * g) + t8);                                         \
-    T w = SQRT(6 * (1 + g * g) - t8 + 8 * t4 / (t0 * t9)) - t9;                \
-    return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
-static float  eq6f(float g, float alpha, float xi)    { EQ6(float, sqrtf, cbrtf) }
-static double eq6d(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
 
 /* ---- tables: N nodes at s = 0 .. 1 (s = 0 is the forward direction) ---- */
 
@@ -389,8 +373,8 @@ static double t_fog_s(void)  LOOP(double, mist_fog_sample(cfog, xb[i]))
 
 /* Part 2 samplers */
 static float cgf, caf;
-static double t_eq6f(void)   LOOP(float, eq6f(cgf, caf, xbf[i]))
-static double t_eq6d(void)   LOOP(double, eq6d(cg, ca, xb[i]))
+static double t_eq6f(void)   LOOP(float, draine_eq6f(cgf, caf, xbf[i]))
+static double t_eq6d(void)   LOOP(double, draine_eq6(cg, ca, xb[i]))
 static double t_mistf(void)  LOOP(float, mist_draine_samplef(cgf, caf, xbf[i]))
 static double t_mistd(void)  LOOP(double, mist_draine_sample(cg, ca, xb[i]))
 
@@ -923,8 +907,8 @@ int main(int argc, char **argv)
                     double rd = (double)ref_sample_from(g, al, xs[i], ud);
                     double rf = (double)ref_sample_from(gf, af, xf, uf);
                     double u[NI], r[NI];
-                    u[0] = eq6f(gf, af, xf);  r[0] = rf;
-                    u[1] = eq6d(g, al, xs[i]); r[1] = rd;
+                    u[0] = draine_eq6f(gf, af, xf);  r[0] = rf;
+                    u[1] = draine_eq6(g, al, xs[i]); r[1] = rd;
                     u[2] = uf;                 r[2] = rf;
                     u[3] = ud;                 r[3] = rd;
                     for (c = 0; c < NI; ++c) {
