@@ -254,15 +254,7 @@ static double ref[ND][NTH];
 /* the Mie phase function of fitref_mie's fog at arbitrary mu */
 static void mie_at(double d, const double *m, int n, double *p)
 {
-    mist_mie_wavelength wl[3];
-    mist_mie_dist dist = mist_mie_dist_lognormal(d / 2, 1.1);
-    mist_mie_avg a;
-    wl[0] = mist_mie_wl(0.45, 1, mist_mie_water(450, NULL));
-    wl[1] = mist_mie_wl(0.55, 1, mist_mie_water(550, NULL));
-    wl[2] = mist_mie_wl(0.65, 1, mist_mie_water(650, NULL));
-    dist.n_radii = N_RADII;
-    a = mist_mie_average(&dist, wl, 3, 1.0, m, (size_t)n, p);
-    if (a.status != MIST_MIE_OK) { fprintf(stderr, "mie failed at d = %g\n", d); exit(1); }
+    (void)fitref_mie_at(d, m, (size_t)n, p, N_RADII);
 }
 
 static double cs_mean_cos(double g) { return 3 * g * (4 + g * g) / (5 * (2 + g * g)); }

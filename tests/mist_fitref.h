@@ -41,8 +41,9 @@ static void fitref_errors(const double *p, const double *ref, double *l1, double
     *l1 = a; *lrms = sqrt(b);
 }
 
-/* Mie reference for diameter d (um); returns the asymmetry g */
-static double fitref_mie(double d, double *p, int n_radii)
+/* Mie reference for diameter d (um) at the n cosines m[] into p[]; returns
+ * the asymmetry g */
+static double fitref_mie_at(double d, const double *m, size_t n, double *p, int n_radii)
 {
     mist_mie_wavelength wl[3];
     mist_mie_dist dist = mist_mie_dist_lognormal(d / 2, 1.1);
@@ -51,11 +52,16 @@ static double fitref_mie(double d, double *p, int n_radii)
     wl[1] = mist_mie_wl(0.55, 1, mist_mie_water(550, NULL));
     wl[2] = mist_mie_wl(0.65, 1, mist_mie_water(650, NULL));
     dist.n_radii = n_radii;
-    a = mist_mie_average(&dist, wl, 3, 1.0, mu, NTH, p);
+    a = mist_mie_average(&dist, wl, 3, 1.0, m, n, p);
     if (a.status != MIST_MIE_OK) { fprintf(stderr, "mie failed at d = %g\n", d); exit(1); }
     return a.g;
 }
 
+/* the same on the grid mu[] */
+static double fitref_mie(double d, double *p, int n_radii)
+{
+    return fitref_mie_at(d, mu, NTH, p, n_radii);
+}
 
 /* the printed reading of eq. 8 and 10: constants outside the exponential */
 static mist_fog fog_printed(double d)
