@@ -56,6 +56,21 @@ def hfog(typ, **kw):
     return out
 
 
+def layers(typ, pieces, *fogs):
+    """a direct fuzz_hfog record of mist_hfog_layers_eval: n + 1, pieces + 2,
+    then each layer's fields (each a dict for hfog(); the first's ray)"""
+    out = bytes([(1 << 2) | 2 | (typ == 'f'), len(fogs) + 1, pieces + 2])
+    for kw in fogs:
+        out += hfog(typ, **kw)[1:]
+    return out
+
+
+def segment(typ, k0, k1, s0, s1, length):
+    """a direct fuzz_hfog record of mist_segment_linear"""
+    enc = d if typ == 'd' else f
+    return bytes([(2 << 2) | 2 | (typ == 'f')]) + b''.join(enc(x) for x in (k0, k1, s0, s1, length))
+
+
 def down(w):
     """a unit direction with vertical component w"""
     return (math.sqrt(1 - w * w), w, 0.0)
@@ -133,6 +148,25 @@ CASES = {
         'ls-overflow-d': hfog('d', rs=('0x1.ffffffffffffep+1023', 0.02, 0.04),
                               re=(100.0, 0.02, 0.04), ambient=(9.3, 1.0, 1.0),
                               dir=(0.43, 0.72, -0.54), length=200.0),
+        # mist_hfog_layers_eval: a layer whose density at the camera overflows
+        # (e^710): L = 0 and bound 0, where mist_hfog_eval gives L = 10
+        # (opaque, albedo 1, ambient 10)
+        'layers-overflow-d': layers('d', 8, dict(base=0.0, density=1.0, H=1.0,
+                                                 rs=(0.5, 0.5, 0.5), re=(0.5, 0.5, 0.5),
+                                                 ms=(0.0, 0.0, 0.0), me=(0.0, 0.0, 0.0),
+                                                 sun=(0.0, 0.0, 0.0), ambient=(10.0, 10.0, 10.0),
+                                                 origin=(0.0, -710.0, 0.0), dir=(0.8, -0.6, 0.0),
+                                                 length=10.0)),
+        # mist_segment_linear: k1 length overflows but k0 length does not: the
+        # "unbounded" limit s0/k0 (+inf for k0 = 0) is taken; exact sqrt(pi/2)
+        'segment-q-overflow-d': segment('d', 0.0, 1e300, 1.0, 0.0, 1e300),
+        'segment-q-overflow2-d': segment('d', '0x1.56e1fc2f8f359p-997', 1e300, 1.0, 1.0, 1e300),
+        # length = DBL_MAX taken as +inf: T = 0, L = -inf; exact T = e^-2
+        'segment-len-max-d': segment('d', 0.0, '0x0.fffffffffffffp-1022', -112.0, 0.0,
+                                     '0x1.fffffffffffffp+1023'),
+        # NaN: (length w0) s0 + (length w1) s1 = -inf + inf (exact: -9.5e309, -inf)
+        'segment-nan-d': segment('d', 0.0, 0.0, '-0x1.ce5beeea71fdep+8', '0x1.641a732a51c14p+8',
+                                 '0x1.ffffffffffffep+1023'),
         # in-scattering NaN: sigma_t subnormal (1 / sigma_t overflows), ambient 0
         'ls-nan-f': hfog('f', base='-0x1.b73738p+3', density='0x1.b36446p-5', H='0x1.dcdcdcp+93',
                          rs=('0x1.fedcp-134', 0.0, 0.0), re=('0x1.fedcp-134', 0.0, 0.0),

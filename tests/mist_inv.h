@@ -1244,6 +1244,22 @@ MI_INLINE void MI_F(mi_hfog_eval)(const MI_HFOG *fog, MI_V3 o, MI_V3 dir, MI_T l
 
 #define MI_RGBI(v, c) ((c) == 0 ? (v).r : ((c) == 1 ? (v).g : (v).b))
 
+/* Prints a fog's fields (after a failure that was printed). */
+MI_INLINE void MI_F(mi_put_fog)(int k, const MI_HFOG *f)
+{
+    if (mi_fails > mi_print_max && !mi_abort_on_fail) return;
+    printf("  layer %d: base %a density %a H %a scat R (%a %a %a) M (%a %a %a) ext R (%a %a %a) "
+           "M (%a %a %a) mie {%a, %a, %a, %a} sun_dir (%a %a %a) sun (%a %a %a) ambient (%a %a %a)"
+           " sun_ext %d\n", k, (double)f->base, (double)f->density, (double)f->scale_height,
+           (double)f->rayleigh_scat.r, (double)f->rayleigh_scat.g, (double)f->rayleigh_scat.b,
+           (double)f->mie_scat.r, (double)f->mie_scat.g, (double)f->mie_scat.b,
+           (double)f->rayleigh_ext.r, (double)f->rayleigh_ext.g, (double)f->rayleigh_ext.b,
+           (double)f->mie_ext.r, (double)f->mie_ext.g, (double)f->mie_ext.b,
+           MI_FOGARGS(f->mie_phase), (double)f->sun_dir.x, (double)f->sun_dir.y,
+           (double)f->sun_dir.z, (double)f->sun.r, (double)f->sun.g, (double)f->sun.b,
+           (double)f->ambient.r, (double)f->ambient.g, (double)f->ambient.b, f->sun_extinction);
+}
+
 /* Layers along one ray: no fog for NULL or n < 1; T in [0, 1] and the
  * product of the layers' own transmittances (at most MIST_HFOG_MAX_LAYERS
  * used); L >= 0 and bound >= 0, never NaN; L within its bound of the
@@ -1253,7 +1269,7 @@ MI_INLINE void MI_F(mi_hfog_layers)(const MI_HFOG *ls, int n, MI_V3 o, MI_V3 d, 
                                     int pieces)
 {
     MI_RGB t, l, b, tk, t2;
-    mi_w prod[3] = { 1, 1, 1 }, pmax = 0;
+    mi_w prod[3] = { 1, 1, 1 }, pmax = 0, amin[3] = { 1, 1, 1 };
     int k, c, m = n < MIST_HFOG_MAX_LAYERS ? n : MIST_HFOG_MAX_LAYERS;
     MI_CALL(MI_L(mist_hfog_layers_eval)(ls, n, o, d, len, pieces, &t, &l, &b));
     MI_CALL(MI_L(mist_hfog_layers_eval)(ls, n, o, d, len, pieces, &t2, (MI_RGB *)0,
@@ -1263,7 +1279,9 @@ MI_INLINE void MI_F(mi_hfog_layers)(const MI_HFOG *ls, int n, MI_V3 o, MI_V3 d, 
                  "%a), length %a) channel %d: T %a L %a bound %a: %s (%a)", n, pieces, \
                  (double)o.x, (double)o.y, (double)o.z, (double)d.x, (double)d.y, (double)d.z, \
                  (double)len, c, (double)MI_RGBI(t, c), (double)MI_RGBI(l, c), \
-                 (double)MI_RGBI(b, c), what, (double)(v)); return; } while (0)
+                 (double)MI_RGBI(b, c), what, (double)(v)); \
+         for (k = 0; ls && k < m; ++k) { MI_F(mi_put_fog)(k, &ls[k]); } \
+         return; } while (0)
     for (c = 0; c < 3; ++c) {
         MI_T tc = MI_RGBI(t, c), lc = MI_RGBI(l, c), bc = MI_RGBI(b, c);
         if (MI_ISNAN(tc) || !(tc >= 0 && tc <= 1)) MI_LFAIL(c, "T NaN or outside [0, 1]", tc);
@@ -1281,6 +1299,15 @@ MI_INLINE void MI_F(mi_hfog_layers)(const MI_HFOG *ls, int n, MI_V3 o, MI_V3 d, 
             && MI_ISFIN(ls[k].base)) {
             mi_w p = MI_F(mi_pmax)(ls[k].mie_phase);
             if (p > pmax) pmax = p;
+            for (c = 0; c < 3; ++c) {       /* the smallest albedo ss / st */
+                mi_w sr = MI_F(mi_san_pos)(MI_RGBI(ls[k].rayleigh_scat, c));
+                mi_w sm = MI_F(mi_san_pos)(MI_RGBI(ls[k].mie_scat, c));
+                mi_w er = MI_F(mi_san_pos)(MI_RGBI(ls[k].rayleigh_ext, c));
+                mi_w em = MI_F(mi_san_pos)(MI_RGBI(ls[k].mie_ext, c)), st;
+                st = (er > sr ? er : sr) + (em > sm ? em : sm);
+                if (st > (mi_w)MI_MAX) st = MI_MAX;
+                if (st > 0 && (sr + sm) / st < amin[c]) amin[c] = (sr + sm) / st;
+            }
         }
     }
     if (pmax < 2 * MI_3_16PI_W) pmax = 2 * MI_3_16PI_W;
@@ -1297,6 +1324,10 @@ MI_INLINE void MI_F(mi_hfog_layers)(const MI_HFOG *ls, int n, MI_V3 o, MI_V3 d, 
         hi = (la + e * pmax) * (1 - (mi_w)tc);
         if (hi < (mi_w)MI_MAX / 4 && !MI_ISFIN(lc))
             MI_LFAIL(c, "L not finite where (La + E max p)(1 - T) and the bound are", hi);
+        /* at least the ambient light times the smallest albedo */
+        if (la * amin[c] * (1 - (mi_w)tc) * (1 - 64 * MI_EPS * (1 + tau)) - bc
+            - la * MI_EPS - 16 * (mi_w)MI_TMIN > lc)
+            MI_LFAIL(c, "L below La (min albedo)(1 - T) - bound", la * amin[c] * (1 - (mi_w)tc));
         /* (1 - T is known to T's rounding, eps / 2) */
         if (lc > hi * (1 + 64 * MI_EPS * (1 + tau)) + bc + (la + e * pmax) * MI_EPS
                  + 16 * (mi_w)MI_TMIN)
@@ -1366,7 +1397,8 @@ MI_INLINE MI_T MI_F(mi_segment)(MI_T k0, MI_T k1, MI_T s0, MI_T s1, MI_T len)
                  (double)k0, (double)k1, (double)s0, (double)s1, (double)len, (double)r, \
                  (double)T, what, (double)(v)); return r; } while (0)
     if (!MI_F(mi_same)(r, r2)) MI_GFAIL("differs with transmittance NULL", r2);
-    if (MI_ISNAN(r)) MI_GFAIL("NaN", r);
+    if (MI_ISNAN(r) && !MI_ISINF(s0) && !MI_ISINF(s1)) MI_GFAIL("NaN", r);
+    if (MI_ISINF(s0) || MI_ISINF(s1)) return r;            /* (only: not NaN) */
     if (MI_ISNAN(T) || !(T >= 0 && T <= 1)) MI_GFAIL("T NaN or outside [0, 1]", T);
     if (MI_ISNAN(len) || !(len > 0)) {
         if (r != 0 || T != 1) MI_GFAIL("length NaN or <= 0 must give 0, T = 1", T);
@@ -1389,8 +1421,10 @@ MI_INLINE MI_T MI_F(mi_segment)(MI_T k0, MI_T k1, MI_T s0, MI_T s1, MI_T len)
     smin = b0 < b1 ? b0 : b1; smax = b0 < b1 ? b1 : b0;
     lo = smin * (smin < 0 ? Ihi : Ilo);
     hi = smax * (smax < 0 ? Ilo : Ihi);
-    tol = 64 * MI_EPS * (fabsl(smin) + fabsl(smax)) * Ihi + 16 * (mi_w)MI_TMIN
-        + MI_FAST * 4 * (mi_w)MI_MIN;
+    /* (length w) s with length w below the normal range: |s| TMIN absolute */
+    tol = 64 * MI_EPS * (fabsl(smin) + fabsl(smax)) * Ihi
+        + 4 * (1 + fabsl(smin) + fabsl(smax)) * (mi_w)MI_TMIN
+        + MI_FAST * 4 * (1 + fabsl(smin) + fabsl(smax)) * (mi_w)MI_MIN;
     if (fabsl(lo) < (mi_w)MI_MAX / 4 && fabsl(hi) < (mi_w)MI_MAX / 4 && !MI_ISFIN(r))
         MI_GFAIL("not finite where the result's bounds are", hi);
     if (MI_ISFIN(r) && (r < lo - tol || r > hi + tol))
