@@ -1022,18 +1022,53 @@ MIST__F MIST__T MIST__FN(mist__phi1)(MIST__T z)
     return z == MIST__C(0) ? MIST__C(1) : -MIST__M(expm1)(-z) / z;
 }
 
-/* c * exp(-(xh + xl)) for c >= 0 and |xl| << 1 (a non-finite xl counts as
- * 0).  The exponential is taken in two halves when one alone would leave
- * the normal range, so the product is right whenever it is representable. */
-MIST__F MIST__T MIST__FN(mist__expmul)(MIST__T c, MIST__T xh, MIST__T xl)
+/* c1 c2 c3 c4 / d * exp(-(xh + xl)), for c1..c4 >= 0, d > 0 (+inf counts
+ * as the largest finite value) and |xl| << 1 (else taken as 0: xh is then
+ * far beyond exp's range).  Right whenever the result is representable:
+ * the fast path is taken when every partial product and the result are
+ * normal; else the factors' exponents are set aside (frexp) and the
+ * exponential is taken in 2^m equal parts (an exact division of xh),
+ * renormalising after each, so that no intermediate leaves the range;
+ * ldexp rounds once at the end. */
+MIST__F MIST__T MIST__FN(mist__expmul)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
+                                       MIST__T d, MIST__T xh, MIST__T xl)
 {
-    MIST__T e;
-    if (c == MIST__C(0)) return MIST__C(0);
-    if (!MIST__FN(mist__finite)(xl)) xl = MIST__C(0);
-    if (xh > -MIST__XLIM && xh < MIST__XLIM)
-        return c * MIST__M(exp)(-xh) * (MIST__C(1) - xl);
-    e = MIST__M(exp)(MIST__C(-0.5) * xh);
-    return c * e * (MIST__C(1) - xl) * e;
+    const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
+    MIST__T p, r, e, x;
+    int k, k1, k2, k3, k4, k5, n, i;
+    if (!(c1 > MIST__C(0) && c2 > MIST__C(0) && c3 > MIST__C(0) && c4 > MIST__C(0)) || xh != xh)
+        return MIST__C(0);
+    c1 = c1 < MIST__BIG ? c1 : MIST__BIG; c2 = c2 < MIST__BIG ? c2 : MIST__BIG;
+    c3 = c3 < MIST__BIG ? c3 : MIST__BIG; c4 = c4 < MIST__BIG ? c4 : MIST__BIG;
+    d = d < MIST__BIG ? d : MIST__BIG;
+    if (!(xl < MIST__C(1e-3) && xl > MIST__C(-1e-3))) xl = MIST__C(0);
+    if (xh > -MIST__XLIM && xh < MIST__XLIM) {
+        MIST__T p1 = c1 * c2, p2 = p1 * c3, p3 = p2 * c4;
+        p = p3 / d;
+        if (p1 >= tmin && p1 <= MIST__BIG && p2 >= tmin && p2 <= MIST__BIG && p3 >= tmin
+            && p3 <= MIST__BIG && p >= tmin && p <= MIST__BIG) {
+            if (xh == MIST__C(0) && xl == MIST__C(0)) return p;
+            r = p * MIST__M(exp)(-xh) * (MIST__C(1) - xl);
+            if (r >= tmin && r <= MIST__BIG) return r;
+        }
+    }
+    p = MIST__M(frexp)(c1, &k1) * MIST__M(frexp)(c2, &k2);
+    p = p * MIST__M(frexp)(c3, &k3) * MIST__M(frexp)(c4, &k4);
+    p = p / MIST__M(frexp)(d, &k5);                 /* in [1/32, 2) */
+    k = k1 + k2 + k3 + k4 - k5;
+    /* e^-xh against 2^k: beyond these the result is 0 or +inf */
+    x = xh - (MIST__T)k * MIST__C(0.693147180559945309);
+    if (x > MIST__C(2) * MIST__XLIM) return MIST__C(0);
+    if (x < MIST__C(-2) * MIST__XLIM) return (MIST__T)INFINITY;
+    for (n = 1; !(xh / (MIST__T)n < MIST__XLIM && xh / (MIST__T)n > -MIST__XLIM); n *= 2) {}
+    e = MIST__M(exp)(-xh / (MIST__T)n);
+    r = p * (MIST__C(1) - xl);
+    for (i = 0; i < n; ++i) {
+        int j;
+        r = MIST__M(frexp)(r * e, &j);
+        k += j;
+    }
+    return MIST__M(ldexp)(r, k);
 }
 
 /* One exponential layer, density d0 exp(-(y - yb) / H), along the ray
@@ -1050,40 +1085,54 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
                                              MIST__T yb, MIST__T H, MIST__T d0)
 {
     MIST__HRAY r;
-    MIST__T hh = 0, hl = 0, ah = 0, al = 0, xh, xl, e, za, leff, n, ne, p, pe;
-    if (H < MIST__BIG) {                        /* else uniform: h = a = 0 */
-        n = MIST__FN(mist__two_sum)(y, -yb, &ne);
-        if (t0 != MIST__C(0)) {                 /* y - yb + w t0 */
-            MIST__T d = n, de = ne;
-            p = MIST__FN(mist__two_prod)(w, t0, &pe);
-            n = MIST__FN(mist__two_sum)(d, p, &ne);
-            ne += de + pe;
+    MIST__T hh = 0, hl = 0, ah = 0, al = 0, xh = 0, xl = 0, za, leff, n = 0, ne = 0, p = 0, pe = 0;
+    if (H <= MIST__BIG) {                        /* else uniform: h = a = 0 */
+        /* numerators in two parts: y - yb (+ w t0), and w s; if a sum
+         * overflows though its terms do not, all is halved (exactly,
+         * H too), which keeps the quotients */
+        MIST__T sc = MIST__C(1), Hs = H, f = 0, fe = 0;
+        int pass;
+        for (pass = 0; pass < 2; ++pass, sc = MIST__C(0.5), Hs = MIST__C(0.5) * H) {
+            n = MIST__FN(mist__two_sum)(sc * y, -(sc * yb), &ne);
+            if (t0 != MIST__C(0)) {                 /* y - yb + w t0 */
+                MIST__T d = n, de = ne;
+                p = MIST__FN(mist__two_prod)(w, sc * t0, &pe);
+                n = MIST__FN(mist__two_sum)(d, p, &ne);
+                ne += de + pe;
+            }
+            if (s <= MIST__BIG) {
+                p = MIST__FN(mist__two_prod)(w, sc * s, &pe);
+                f = MIST__FN(mist__two_sum)(n, p, &fe);
+                fe += ne + pe;
+            }
+            if (MIST__FN(mist__finite)(n) && MIST__FN(mist__finite)(f)) break;
         }
-        hh = MIST__FN(mist__ddiv)(n, ne, H, &hl);
-        if (s < MIST__BIG) {
-            p = MIST__FN(mist__two_prod)(w, s, &pe);
-            ah = MIST__FN(mist__ddiv)(p, pe, H, &al);
+        hh = MIST__FN(mist__ddiv)(n, ne, Hs, &hl);
+        if (s <= MIST__BIG) {
+            /* the far end's height over H: the numerators are added first,
+             * so that two huge quotients never meet */
+            ah = MIST__FN(mist__ddiv)(p, pe, Hs, &al);
+            xh = MIST__FN(mist__ddiv)(f, fe, Hs, &xl);
         }
     }
-    r.rho0 = MIST__FN(mist__expmul)(d0, hh, hl);
-    if (!(s < MIST__BIG)) {                     /* s = +inf */
-        if (w > MIST__C(0) && H < MIST__BIG) {  /* the column above: H / w */
-            r.col  = MIST__FN(mist__expmul)(d0 * (H / w), hh, hl);
+    r.rho0 = MIST__FN(mist__expmul)(d0, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(1), hh, hl);
+    if (!(s <= MIST__BIG)) {                     /* s = +inf */
+        if (w > MIST__C(0) && H <= MIST__BIG) {  /* the column above: H / w */
+            r.col  = MIST__FN(mist__expmul)(d0, H, MIST__C(1), MIST__C(1), w, hh, hl);
             r.rho1 = MIST__C(0);
         } else {                                /* down, level or uniform */
             r.col  = (MIST__T)INFINITY;
-            r.rho1 = (w < MIST__C(0) && H < MIST__BIG) ? (MIST__T)INFINITY : r.rho0;
+            r.rho1 = (w < MIST__C(0) && H <= MIST__BIG) ? (MIST__T)INFINITY : r.rho0;
         }
         return r;
     }
     za = ah < MIST__C(0) ? -ah : ah;
+    if (!(za == za)) za = (MIST__T)INFINITY;
     leff = za < MIST__C(1) ? s * MIST__FN(mist__phi1)(za)
                            : H / (w < MIST__C(0) ? -w : w) * -MIST__M(expm1)(-za);
-    xh = MIST__FN(mist__two_sum)(hh, ah, &e);   /* the far end: h + a */
-    xl = e + hl + al;
-    r.rho1 = MIST__FN(mist__expmul)(d0, xh, xl);
-    if (!(ah < MIST__C(0))) { xh = hh; xl = hl; }   /* the lower end */
-    r.col = MIST__FN(mist__expmul)(d0 * leff, xh, xl);
+    r.rho1 = MIST__FN(mist__expmul)(d0, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(1), xh, xl);
+    if (!(p < MIST__C(0))) { xh = hh; xl = hl; }    /* the lower end */
+    r.col = MIST__FN(mist__expmul)(d0, leff, MIST__C(1), MIST__C(1), MIST__C(1), xh, xl);
     return r;
 }
 
@@ -1092,8 +1141,16 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
 MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
 {
     MIST__T d = v.x * v.x + v.y * v.y + v.z * v.z - MIST__C(1);
+    MIST__V3 u;
     if (d <= MIST__C(16) * MIST__EPS && d >= MIST__C(-16) * MIST__EPS) return v;
-    return MIST__FN(mist_normalize)(v);
+    u = MIST__FN(mist_normalize)(v);
+    /* a vertical component below the range keeps its sign: up is up */
+    if (u.y == MIST__C(0) && v.y != MIST__C(0) && MIST__FN(mist__finite)(v.x)
+        && MIST__FN(mist__finite)(v.y) && MIST__FN(mist__finite)(v.z)) {
+        const MIST__T tiny = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN * DBL_EPSILON : FLT_MIN * FLT_EPSILON);
+        u.y = v.y > MIST__C(0) ? tiny : -tiny;
+    }
+    return u;
 }
 
 /* The integral of the density factor  density exp(-(y(t) - base)/H)  along
@@ -1161,42 +1218,55 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
             }
         }
         for (c = 0; c < 3; ++c) {
-            MIST__T tau, I, Is, src, ssun;
+            MIST__T tau, omt, f1, src = MIST__FN(mist__pos)(sR[c] + sM[c]);
             if (!(st[c] > MIST__C(0)) || !(ray.col > MIST__C(0))) continue;
             tau = st[c] * ray.col;
             tr[c] = MIST__M(exp)(-tau);
             if (!inscatter) continue;
-            /* int_0^s rho e^-tau(t) dt = (1 - e^-tau)/st = col phi1(tau) */
-            I = tau < MIST__C(1) ? ray.col * MIST__FN(mist__phi1)(tau)
-                                 : -MIST__M(expm1)(-tau) / st[c];
-            Is = I;
-            if (fog->sun_extinction) {
+            /* st int_0^s rho e^-tau(t) dt = 1 - T = tau phi1(tau).  Each
+             * term is one scaled product (mist__expmul), so that neither a
+             * large radiance nor a column or a ratio below the range loses
+             * what the product keeps: for tau < 1 the column itself enters
+             * (no division by st), beyond it the albedo ss/st. */
+            omt = -MIST__M(expm1)(-tau);
+            f1 = tau < MIST__C(1) ? MIST__FN(mist__phi1)(tau) : MIST__C(0);
+            if (tau < MIST__C(1)) {
+                ls[c] = MIST__FN(mist__expmul)(La[c], src, ray.col, f1, MIST__C(1), MIST__C(0), MIST__C(0));
+                if (!fog->sun_extinction)
+                    ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], ray.col, pR * f1, MIST__C(1), MIST__C(0), MIST__C(0))
+                           + MIST__FN(mist__expmul)(E[c], sM[c], ray.col, pM * f1, MIST__C(1), MIST__C(0), MIST__C(0));
+            } else {
+                ls[c] = MIST__FN(mist__expmul)(La[c], src, omt, MIST__C(1), st[c], MIST__C(0), MIST__C(0));
+                if (!fog->sun_extinction)
+                    ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], pR * omt, MIST__C(1), st[c], MIST__C(0), MIST__C(0))
+                           + MIST__FN(mist__expmul)(E[c], sM[c], pM * omt, MIST__C(1), st[c], MIST__C(0), MIST__C(0));
+            }
+            if (fog->sun_extinction && ly > MIST__C(0)) {
                 /* Sun dimmed by the column above each point, rho H / ly:
                  * int rho e^-(tau(t) + st rho(t) H/ly) dt
                  *   = e^-min(A0, A1) col phi1(tau |nu|),  nu = 1 - w/ly,
                  * A0, A1 the sun's optical depth to the start and (plus tau)
-                 * to the end.  See the section comment. */
-                Is = MIST__C(0);
-                if (ly > MIST__C(0)) {
-                    MIST__T Hl = H / ly, a, z, ea;
-                    a = st[c] * ray.rho0;
-                    a = a > MIST__C(0) ? a * Hl : MIST__C(0);            /* A0 */
-                    if (nu < MIST__C(0)) {                               /* A1 */
-                        MIST__T a1 = st[c] * ray.rho1;
-                        a = tau + (a1 > MIST__C(0) ? a1 * Hl : MIST__C(0));
-                    }
-                    ea = MIST__M(exp)(-a);
-                    if (ea > MIST__C(0)) {
-                        z = tau * anu;
-                        Is = ea * (z < MIST__C(1) ? ray.col * MIST__FN(mist__phi1)(z)
-                                                  : -MIST__M(expm1)(-z) / (st[c] * anu));
+                 * to the end (e^-A enters expmul as its exponent).  See the
+                 * section comment.  A sun at or below the horizon: none. */
+                MIST__T Hl = H / ly, a, z = tau * anu;
+                a = st[c] * ray.rho0;
+                a = a > MIST__C(0) ? a * Hl : MIST__C(0);                /* A0 */
+                if (nu < MIST__C(0)) {                                   /* A1 */
+                    MIST__T a1 = st[c] * ray.rho1;
+                    a = tau + (a1 > MIST__C(0) ? a1 * Hl : MIST__C(0));
+                }
+                if (a < (MIST__T)INFINITY) {
+                    if (z < MIST__C(1)) {
+                        MIST__T fz = MIST__FN(mist__phi1)(z);
+                        ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], ray.col, pR * fz, MIST__C(1), a, MIST__C(0))
+                               + MIST__FN(mist__expmul)(E[c], sM[c], ray.col, pM * fz, MIST__C(1), a, MIST__C(0));
+                    } else {
+                        MIST__T oz = -MIST__M(expm1)(-z), inu = MIST__C(1) / anu;
+                        ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], pR * oz, inu, st[c], a, MIST__C(0))
+                               + MIST__FN(mist__expmul)(E[c], sM[c], pM * oz, inu, st[c], a, MIST__C(0));
                     }
                 }
             }
-            src  = sR[c] + sM[c];
-            ssun = sR[c] * pR + sM[c] * pM;
-            ls[c] = (src > MIST__C(0) && I > MIST__C(0) ? La[c] * src * I : MIST__C(0))
-                  + (ssun > MIST__C(0) && Is > MIST__C(0) ? E[c] * ssun * Is : MIST__C(0));
         }
     }
     if (transmittance) { transmittance->r = tr[0]; transmittance->g = tr[1]; transmittance->b = tr[2]; }
@@ -1255,6 +1325,20 @@ MIST__F int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST
     *st = MIST__FN(mist__pos)(er + em);
     return MIST__FN(mist__pos)(f->density) > MIST__C(0) && f->scale_height > MIST__C(0)
         && MIST__FN(mist__finite)(f->base);
+}
+
+/* ln(st_k rho_k(yy) / (st_i rho_i(yy))) for channel c, written so that
+ * layers with one scale height give the small difference of their bases
+ * exactly: (yy - b_k)/H_k - (yy - b_i)/H_i = (yy - b_k)(1/H_k - 1/H_i)
+ * + (b_i - b_k)/H_i. */
+MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], const MIST__T *H,
+                                     const MIST__T *lnd, int k, int i, int c, MIST__T yy)
+{
+    MIST__T ik = H[k] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[k]) : MIST__C(0);
+    MIST__T ii = H[i] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[i]) : MIST__C(0), x;
+    x = ik == ii ? MIST__C(0) : (yy - ls[k].base) * (ik - ii);
+    if (ii != MIST__C(0)) x += (ls[i].base - ls[k].base) * ii;
+    return MIST__M(log)(st[k][c] / st[i][c]) + (lnd[k] - lnd[i]) - x;
 }
 
 #ifndef MIST_HFOG_MAX_LAYERS
@@ -1340,7 +1424,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     tn = t - r * tv / mu;
                 }
                 if (!(tn > lo && tn < hi))
-                    tn = hi < MIST__BIG ? MIST__C(0.5) * (lo + hi)
+                    tn = hi <= MIST__BIG ? MIST__C(0.5) * (lo + hi)
                                         : lo + MIST__C(2) * (t > lo ? t - lo : (lo > MIST__C(1) ? lo : MIST__C(1)));
                 if (tn == t) break;
                 t = tn;
@@ -1375,73 +1459,88 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     ? MIST__FN(mist__hray_eval)(y, w, MIST__C(0), s, layers[k].base, H[k], d0[k])
                     : MIST__FN(mist__hray_eval)(y, w, tb[j], dt, layers[k].base, H[k], d0[k]);
             for (c = 0; c < 3; ++c) {
-                MIST__T dtau = MIST__C(0), amb = MIST__C(0), sun = MIST__C(0), mu0 = MIST__C(0);
-                MIST__T psi1 = MIST__C(0), gj, gk, wamb, wsun, osc = MIST__C(0);
-                MIST__T cmin[2], cmax[2], fmin, fmax;
-                int first = 1;
+                MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), dmax = MIST__C(0), wsum = MIST__C(0);
+                MIST__T wk[MIST_HFOG_MAX_LAYERS], lk[MIST_HFOG_MAX_LAYERS], ca[MIST_HFOG_MAX_LAYERS];
+                MIST__T cu[MIST_HFOG_MAX_LAYERS], famb = MIST__C(0), fsun = MIST__C(0), lmax = MIST__C(0);
+                MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2];
+                int first = 1, ref = 0;
                 for (k = 0; k < n; ++k) {
+                    wk[k] = MIST__C(0);
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                    if (seg[k].col > MIST__C(0)) {
-                        dtau += st[k][c] * seg[k].col;
-                        amb  += (sR[k][c] + sM[k][c]) * seg[k].col;
-                        sun  += (sR[k][c] * pR + sM[k][c] * pM[k]) * seg[k].col;
-                    }
-                    mu0 += st[k][c] * seg[k].rho0;
+                    if (seg[k].col > MIST__C(0)) dtau += st[k][c] * seg[k].col;
+                    if (seg[k].col > dmax) dmax = seg[k].col;
                     if (sunx && ly > MIST__C(0) && seg[k].rho1 > MIST__C(0))
                         psi1 += st[k][c] * seg[k].rho1 * (H[k] / ly);
+                    /* ln of the layer's extinction at the piece start,
+                     * relative to the first layer's (no huge common term) */
+                    if (first) ref = k;
+                    lk[k] = MIST__FN(mist__lrel)(layers, st, H, lnd, k, ref, c, y + w * tb[j]);
+                    if (first || lk[k] > lmax) lmax = lk[k];
+                    first = 0;
+                    /* albedo x light: ambient (and undimmed sun), dimmed sun */
+                    cu[k] = MIST__FN(mist__expmul)(E[c], sR[k][c], pR, MIST__C(1), st[k][c], MIST__C(0), MIST__C(0))
+                          + MIST__FN(mist__expmul)(E[c], sM[k][c], pM[k], MIST__C(1), st[k][c], MIST__C(0), MIST__C(0));
+                    ca[k] = MIST__FN(mist__expmul)(La[c], sR[k][c] + sM[k][c], MIST__C(1), MIST__C(1), st[k][c], MIST__C(0), MIST__C(0)) + (sunx ? MIST__C(0) : cu[k]);
                 }
                 if (!(dtau > MIST__C(0))) continue;
-                if (!(dtau < MIST__BIG)) {           /* unbounded piece: the */
-                    amb = sun = MIST__C(0);           /* source ratio at its start */
+                /* each layer's share of the piece's extinction: of its column
+                 * (scaled by the largest), or for an unbounded piece its share
+                 * at the start (from the logs) */
+                {
+                    /* unbounded: the start densities where all are normal
+                     * (exact ratios), else their logs */
+                    const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
+                    int norm = 1;
+                    MIST__T rmax = MIST__C(0);
+                    for (k = 0; k < n; ++k)
+                        if (ok[k] && st[k][c] > MIST__C(0)) {
+                            if (!(seg[k].rho0 >= tmin && seg[k].rho0 <= MIST__BIG)) norm = 0;
+                            else if (seg[k].rho0 > rmax) rmax = seg[k].rho0;
+                        }
                     for (k = 0; k < n; ++k) {
-                        if (!ok[k] || !(st[k][c] > MIST__C(0)) || !(seg[k].rho0 > MIST__C(0))
-                        || !(mu0 < MIST__BIG)) continue;
-                        amb += (sR[k][c] + sM[k][c]) * (seg[k].rho0 / mu0);
-                        sun += (sR[k][c] * pR + sM[k][c] * pM[k]) * (seg[k].rho0 / mu0);
+                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        wk[k] = dtau <= MIST__BIG ? st[k][c] * (seg[k].col / dmax)
+                              : (norm ? st[k][c] * (seg[k].rho0 / rmax)
+                                      : (lk[k] == lmax ? MIST__C(1) : MIST__M(exp)(lk[k] - lmax)));
+                        if (!(wk[k] >= MIST__C(0))) wk[k] = MIST__C(0);
+                        wsum += wk[k];
                     }
                 }
-                /* weights: int over the piece of e^-(tau - tau_j) (ambient) and
-                 * of e^-(psi - psi_low) (dimmed sun), per unit source column */
-                if (dtau < MIST__BIG) {
-                    wamb = dtau < MIST__C(1) ? MIST__FN(mist__phi1)(dtau) : -MIST__M(expm1)(-dtau) / dtau;
-                    wsun = dtau * anu < MIST__C(1) ? MIST__FN(mist__phi1)(dtau * anu)
-                                                   : -MIST__M(expm1)(-dtau * anu) / (dtau * anu);
-                } else {
-                    wamb = MIST__C(1);
-                    wsun = anu > MIST__C(0) ? MIST__C(1) / anu : MIST__C(0);
+                if (!(wsum > MIST__C(0))) continue;
+                for (k = 0; k < n; ++k) {
+                    famb += wk[k] / wsum * (ok[k] && st[k][c] > MIST__C(0) ? ca[k] : MIST__C(0));
+                    fsun += wk[k] / wsum * (ok[k] && st[k][c] > MIST__C(0) ? cu[k] : MIST__C(0));
                 }
                 gj = MIST__M(exp)(-tj[c]);
-                ls[c] += gj * La[c] * amb * wamb;
-                if (gj * amb > MIST__C(0)) rnd[c] += gj * La[c] * amb * wamb * tj[c];
+                om = dtau <= MIST__BIG ? -MIST__M(expm1)(-dtau) : MIST__C(1);   /* 1 - e^-dtau */
+                if (famb > MIST__C(0) && gj > MIST__C(0)) {
+                    ls[c] += famb * gj * om;
+                    rnd[c] += famb * gj * om * tj[c];
+                }
                 /* Bound: the piece's estimate takes each layer's share f_i of
-                 * the extinction as constant (its column average); F = sum c_i
-                 * f_i varies by at most osc = (c_max - c_min)/2 sum_i osc f_i,
-                 * so the error is below osc * min(int g, dtau/4 * osc g)
-                 * (Gruss), g the weight e^-tau or e^-psi. */
+                 * the extinction as constant; F = sum c_i f_i varies by at
+                 * most osc = (c_max - c_min)/2 sum_i osc f_i, so the error is
+                 * below osc * min(int g, dtau/4 * osc g) (Gruss), g the weight
+                 * e^-tau or e^-psi. */
+                first = 1;
                 cmin[0] = cmin[1] = cmax[0] = cmax[1] = MIST__C(0);
                 for (i = 0; i < n; ++i) {
-                    MIST__T sa = MIST__C(0), sb = MIST__C(0), ci[2];
+                    MIST__T sa = MIST__C(0), sb = MIST__C(0), fmin, fmax;
                     if (!ok[i] || !(st[i][c] > MIST__C(0))) continue;
-                    ci[0] = La[c] * (sR[i][c] + sM[i][c]) / st[i][c]
-                          + (sunx ? MIST__C(0) : E[c] * (sR[i][c] * pR + sM[i][c] * pM[i]) / st[i][c]);
-                    ci[1] = E[c] * (sR[i][c] * pR + sM[i][c] * pM[i]) / st[i][c];
-                    if (first) { cmin[0] = cmax[0] = ci[0]; cmin[1] = cmax[1] = ci[1]; first = 0; }
-                    cmin[0] = ci[0] < cmin[0] ? ci[0] : cmin[0]; cmax[0] = ci[0] > cmax[0] ? ci[0] : cmax[0];
-                    cmin[1] = ci[1] < cmin[1] ? ci[1] : cmin[1]; cmax[1] = ci[1] > cmax[1] ? ci[1] : cmax[1];
+                    if (first) { cmin[0] = cmax[0] = ca[i]; cmin[1] = cmax[1] = cu[i]; first = 0; }
+                    cmin[0] = ca[i] < cmin[0] ? ca[i] : cmin[0]; cmax[0] = ca[i] > cmax[0] ? ca[i] : cmax[0];
+                    cmin[1] = cu[i] < cmin[1] ? cu[i] : cmin[1]; cmax[1] = cu[i] > cmax[1] ? cu[i] : cmax[1];
                     if (np == 1 && same) continue;
                     for (k = 0; k < n; ++k) {
                         /* r_ik = st_k rho_k / (st_i rho_i), monotone along the
                          * ray: in logs, at the piece start and its change */
-                        MIST__T lr, dl, ra, rb, ik = MIST__C(1) / H[i], kk;
+                        MIST__T dl, ra, rb;
                         if (k == i || !ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                        kk = MIST__C(1) / H[k];
-                        lr = MIST__M(log)(st[k][c] / st[i][c]) + lnd[k] - lnd[i]
-                           - (y + w * tb[j] - layers[k].base) * kk
-                           + (y + w * tb[j] - layers[i].base) * ik;
-                        dl = w * (ik - kk);
+                        dl = w * (MIST__C(1) / H[i] - MIST__C(1) / H[k]);
                         dl = dl == MIST__C(0) ? MIST__C(0) : dl * dt;
-                        ra = MIST__M(exp)(lr);
-                        rb = MIST__M(exp)(lr + dl);
+                        ra = MIST__FN(mist__lrel)(layers, st, H, lnd, k, i, c, y + w * tb[j]);
+                        rb = MIST__M(exp)(ra + dl);
+                        ra = MIST__M(exp)(ra);
                         sa += ra > rb ? ra : rb;
                         sb += ra < rb ? ra : rb;
                     }
@@ -1449,21 +1548,23 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     fmax = MIST__C(1) / (MIST__C(1) + sb);
                     osc += fmax - fmin >= MIST__C(0) ? fmax - fmin : MIST__C(1);   /* NaN: all */
                 }
-                gk = dtau < MIST__BIG ? MIST__M(exp)(-(tj[c] + dtau)) : MIST__C(0);
-                bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * (gj - gk)
+                bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * gj * om
                        * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
-                if (!sunx) {
-                    ls[c] += gj * E[c] * sun * wamb;
-                    if (gj * sun > MIST__C(0)) rnd[c] += gj * E[c] * sun * wamb * tj[c];
-                }
-                else if (ly > MIST__C(0)) {
-                    MIST__T pj = psi[c] + tj[c], pk = dtau < MIST__BIG ? psi1 + tj[c] + dtau : (MIST__T)INFINITY;
-                    MIST__T plo = pj < pk ? pj : pk, ej = MIST__M(exp)(-pj), ek = MIST__M(exp)(-pk);
-                    MIST__T dg = ej > ek ? ej - ek : ek - ej;
-                    ls[c] += MIST__M(exp)(-plo) * E[c] * sun * wsun;
-                    if (MIST__M(exp)(-plo) * sun > MIST__C(0))
-                        rnd[c] += MIST__M(exp)(-plo) * E[c] * sun * wsun * plo;
-                    MIST__T fac = MIST__C(0.25) * dtau;     /* min(1/|nu|, dtau/4) */
+                if (sunx && ly > MIST__C(0)) {
+                    MIST__T pj = psi[c] + tj[c], pk = dtau <= MIST__BIG ? psi1 + tj[c] + dtau : (MIST__T)INFINITY;
+                    MIST__T plo = pj < pk ? pj : pk, el = MIST__M(exp)(-plo), ej = MIST__M(exp)(-pj);
+                    MIST__T ek = MIST__M(exp)(-pk), dg = ej > ek ? ej - ek : ek - ej, gs, fac;
+                    /* int over the piece of e^-(psi - psi_low) dtau */
+                    if (!(el > MIST__C(0))) gs = MIST__C(0);
+                    else if (dtau <= MIST__BIG)
+                        gs = dtau * anu < MIST__C(1) ? dtau * MIST__FN(mist__phi1)(dtau * anu)
+                                                     : -MIST__M(expm1)(-dtau * anu) / anu;
+                    else gs = anu > MIST__C(0) ? MIST__C(1) / anu : MIST__C(0);
+                    if (fsun > MIST__C(0) && el * gs > MIST__C(0)) {
+                        ls[c] += fsun * el * gs;
+                        rnd[c] += fsun * el * gs * plo;
+                    }
+                    fac = MIST__C(0.25) * dtau;              /* min(1/|nu|, dtau/4) */
                     if (anu * fac > MIST__C(1)) fac = MIST__C(1) / anu;
                     bd[c] += MIST__C(0.5) * (cmax[1] - cmin[1]) * osc * dg * fac;
                     psi[c] = psi1;
@@ -1722,7 +1823,7 @@ MIST__F void MIST__FN(mist__seg_w)(MIST__T p, MIST__T q, MIST__T *w0, MIST__T *w
  * stable as the extinction goes to 0 (the trapezoid rule of s, then) and
  * grows without bound; see the section comment.  k0, k1: NaN, negative -> 0;
  * s0, s1 NaN -> 0; length NaN or <= 0 -> 0 (transmittance 1); length +inf:
- * the limit s0/k0 (transmittance 0; +inf if k0 = 0 < s0). */
+ * the limit, s0/k0 (transmittance 0; +inf if k0 = 0, unless s0 = 0). */
 MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0, MIST__T s1,
                                               MIST__T length, MIST__T *transmittance)
 {
@@ -1732,13 +1833,46 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
     if (!(s1 == s1)) s1 = MIST__C(0);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
-        if (length < MIST__BIG && p < MIST__BIG && q < MIST__BIG) {
+        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG) {
             tr = MIST__M(exp)(MIST__C(-0.5) * p - MIST__C(0.5) * q);
             MIST__FN(mist__seg_w)(p, q, &w0, &w1);
-            r = (length * w0) * s0 + (length * w1) * s1;
-        } else {                                /* unbounded: the limit */
+            /* len s w, scaled (mist__expmul) against underflow and overflow
+             * on the way; a source of each sign */
+            r = (s0 < MIST__C(0) ? -MIST__FN(mist__expmul)(length, -s0, w0, MIST__C(1), MIST__C(1), MIST__C(0), MIST__C(0))
+                                 : MIST__FN(mist__expmul)(length, s0, w0, MIST__C(1), MIST__C(1), MIST__C(0), MIST__C(0)))
+              + (s1 < MIST__C(0) ? -MIST__FN(mist__expmul)(length, -s1, w1, MIST__C(1), MIST__C(1), MIST__C(0), MIST__C(0))
+                                 : MIST__FN(mist__expmul)(length, s1, w1, MIST__C(1), MIST__C(1), MIST__C(0), MIST__C(0)));
+            if (r != r) r = length * (s0 * w0 + s1 * w1);   /* +inf - inf: sum first */
+        } else {
+            /* k len beyond the range (or len = +inf): e^-tau(1) = 0, and
+             * the large-argument forms of mist__seg_w are taken with the
+             * length scaled out: len M0 and len M1 directly, through
+             * sqrt(len) (M0 ~ 1/p, M1 ~ 1/p^2 or G/(2b)). */
+            MIST__T m0, m1, rl = MIST__M(sqrt)(length), sd, g, f;
             tr = k0 > MIST__C(0) || k1 > MIST__C(0) ? MIST__C(0) : MIST__C(1);
-            r = k0 > MIST__C(0) ? s0 / k0 : (s0 == MIST__C(0) ? MIST__C(0) : s0 * (MIST__T)INFINITY);
+            if (!(length <= MIST__BIG)) {       /* the limit: k0 and s0 throughout */
+                if (transmittance) *transmittance = tr;
+                if (k0 > MIST__C(0)) return s0 / k0;
+                return s0 == MIST__C(0) ? MIST__C(0) : s0 * (MIST__T)INFINITY;
+            }
+            if (k1 > k0) {                      /* rising: erfcx */
+                sd = MIST__M(sqrt)(MIST__C(0.5) * (k1 - k0));
+                f = MIST__FN(mist__erfcx)(MIST__C(0.5) * (k0 / sd) * rl, &g);
+                m0 = MIST__C(0.5) * MIST__C(MIST__SQRTPI) * (rl / sd) * f;
+                m1 = g / (k1 - k0);
+            } else if (k1 < k0) {               /* falling: Dawson */
+                sd = MIST__M(sqrt)(MIST__C(0.5) * (k0 - k1));
+                f = MIST__FN(mist__dawson)(MIST__C(0.5) * (k0 / sd) * rl, &g);
+                m0 = (rl / sd) * f;
+                m1 = g / (k0 - k1);
+            } else if (k0 > MIST__C(0)) {       /* constant */
+                m0 = MIST__C(1) / k0;
+                m1 = m0 / k0 / length;
+            } else {                            /* unreachable: p, q finite */
+                m0 = length; m1 = MIST__C(0.5) * length;
+            }
+            w0 = m0 - m1; w1 = m1;
+            r = (s0 != MIST__C(0) ? s0 * w0 : MIST__C(0)) + (s1 != MIST__C(0) ? s1 * w1 : MIST__C(0));
         }
     }
     if (transmittance) *transmittance = tr;
