@@ -329,12 +329,12 @@ MI_INLINE MI_T MI_F(mi_san_pos)(MI_T x)                         /* height fog */
 
 /* Under -ffast-math (MI_FAST) the inputs stay where neither they nor the
  * library's intermediate results leave the normal range: finite, and 0 or
- * 2^-(emax/2) <= |x| <= 2^(emax/2) (squares and reciprocals normal). */
+ * 2^-(emax/4) <= |x| <= 2^(emax/4) (products of a few of them normal). */
 MI_INLINE int MI_F(mi_fast_ok)(MI_T x)
 {
-    MI_T a = x < 0 ? -x : x;
-    return MI_ISFIN(x) && (a == 0 || (a >= (MI_T)ldexp(1, -MI_EMAX / 2)
-                                      && a <= (MI_T)ldexp(1, MI_EMAX / 2)));
+    MI_T a = x < 0 ? -x : x;        /* (subnormals from the bits: DAZ reads them as 0) */
+    return MI_ISFIN(x) && !MI_ISSUB(x)
+        && (a == 0 || (a >= (MI_T)ldexp(1, -MI_EMAX / 4) && a <= (MI_T)ldexp(1, MI_EMAX / 4)));
 }
 /* ... and g keeps |g| <= 1 - 2^-10: |g| = 1 is the Dirac limit (+inf, which
  * -ffinite-math-only excludes), and closer to it the reassociation that
@@ -1106,14 +1106,16 @@ MI_INLINE MI_T MI_F(mi_hfog_column)(const MI_HFOG *fog, MI_T y, MI_T w, MI_T len
 }
 
 /* The vertical cosine the library uses: dir as given when it is unit to
- * 16 eps, else normalised (bad: (0, 0, 1)). */
+ * 16 eps, else normalised (bad: (0, 0, 1)), rounded to T (a vertical
+ * component below T's range is a level ray). */
 MI_INLINE mi_w MI_F(mi_wy)(MI_V3 d)
 {
     mi_w n[3];
-    MI_T e = d.x * d.x + d.y * d.y + d.z * d.z - 1;
+    MI_T e = d.x * d.x + d.y * d.y + d.z * d.z - 1, w;
     if (e <= 16 * MI_EPS / 2 && e >= -16 * MI_EPS / 2) return d.y < -1 ? -1 : (d.y > 1 ? 1 : d.y);
     MI_F(mi_ref_norm)(d, n);
-    return n[1] < -1 ? -1 : (n[1] > 1 ? 1 : n[1]);
+    w = (MI_T)n[1];
+    return w < -1 ? -1 : (w > 1 ? 1 : w);
 }
 
 /* The maximum over u of the Mie phase function (+inf for a Dirac lobe). */
@@ -1354,11 +1356,17 @@ MI_INLINE void MI_F(mi_hfog_split)(const MI_HFOG *f, MI_V3 o, MI_V3 d, MI_T len,
         MI_T tc = MI_RGBI(t, c), lc = MI_RGBI(l, c), bc = MI_RGBI(b, c);
         MI_T tec = MI_RGBI(te, c), lec = MI_RGBI(le, c);
         mi_w tau = tec > 0 ? -logl(tec) : 0;
-        if (!MI_ISFIN(lec) || !MI_ISFIN(lc) || !MI_ISFIN(bc)) continue;   /* checked elsewhere */
+        /* what results below the normal range may lose (absolute), as in
+         * mi_hfog_eval: the lights times the scattering times TMIN */
+        mi_w fl = 16 * (mi_w)MI_TMIN
+                * (1 + (fabsl((mi_w)MI_RGBI(f->ambient, c)) + 10 * fabsl((mi_w)MI_RGBI(f->sun, c)))
+                       * (1 + fabsl((mi_w)MI_RGBI(f->rayleigh_scat, c))
+                          + fabsl((mi_w)MI_RGBI(f->mie_scat, c))));
+        if (!MI_ISFIN(lec) || !MI_ISFIN(lc) || !MI_ISFIN(bc) || mi_nan_w(fl)) continue;
         if (!(fabsl((mi_w)tc - tec) <= 16 * MI_EPS * (1 + tau) * tec + 16 * (mi_w)MI_TMIN
                                          + MI_FAST * (mi_w)MI_MIN)
-            || !(fabsl((mi_w)lc - lec) <= bc + 64 * MI_EPS * (1 + tau) * lec
-                                          + 16 * (mi_w)MI_TMIN + MI_FAST * (mi_w)MI_MIN)) {
+            || !(fabsl((mi_w)lc - lec) <= bc + 64 * MI_EPS * (1 + tau) * lec + fl
+                                          + MI_FAST * (mi_w)MI_MIN)) {
             mi_fail("mist_hfog_layers_eval of a fog split in two layers (its Rayleigh and its "
                     "Mie part; base %a, density %a, H %a, scat R %a M %a, ext R %a M %a, sun %a,"
                     " ambient %a, sun_ext %d, sun_dir.y %a; origin.y %a, dir (%a, %a, %a), "

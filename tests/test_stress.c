@@ -564,7 +564,13 @@ static void ST_F(st_hfog)(double share)
                     for (j1 = 0; j1 < sizeof ss / sizeof *ss; ++j1)
                         for (q = 0; q < sizeof gl / sizeof *gl; ++q)
                             if (!MI_FAST || (ks[i0] * gl[q] < 1e30 && ks[i1] * gl[q] < 1e30
-                                             && ss[j0] * gl[q] < 1e30 && ss[j1] * gl[q] < 1e30))
+                                             && fabs(ss[j0]) * gl[q] < 1e30
+                                             && fabs(ss[j1]) * gl[q] < 1e30
+                                             && ST_F(mi_fast_ok)((ST_T)ks[i0])
+                                             && ST_F(mi_fast_ok)((ST_T)ks[i1])
+                                             && ST_F(mi_fast_ok)((ST_T)ss[j0])
+                                             && ST_F(mi_fast_ok)((ST_T)ss[j1])
+                                             && ST_F(mi_fast_ok)((ST_T)gl[q])))
                                 ST_F(mi_segment)((ST_T)ks[i0], (ST_T)ks[i1], (ST_T)ss[j0],
                                                  (ST_T)ss[j1], (ST_T)gl[q]);
     }
@@ -593,6 +599,11 @@ static void ST_F(st_hfog)(double share)
                               k ? &bg2 : &bg);
         if (n > 1 && (m >> 16) % 4 == 0)     /* a shared scale height: exact */
             for (k = 1; k < n; ++k) ls[k].scale_height = ls[0].scale_height;
+        if (MI_FAST)                         /* the ray in every layer's range */
+            for (k = 1; k < n; ++k) {
+                ls[k].base = ls[0].base;
+                ls[k].scale_height = (ST_T)(ls[0].scale_height * (1 + 0.5 * k));
+            }
         ST_F(mi_hfog_layers)((m >> 20) % 16 ? ls : (ST_HFOG *)0, n, o, d, len, p);
         ST_F(mi_hfog_split)(&ls[0], o, d, len, p);
     }

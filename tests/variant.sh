@@ -2,7 +2,8 @@
 # variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS TESTS
 # Configures, builds and tests a sub-build of the mist tree SRC in BIN with
 # the C compiler CC, CMAKE_C_FLAGS=FLAGS (build type "Variant": no other
-# optimisation flags) and MIST_VARIANTS=OFF (no recursion), then runs the
+# optimisation flags), MIST_ROBUSTNESS=ON (the stress and replay tests) and
+# MIST_VARIANTS=OFF, MIST_FUZZ_SECONDS=0 (no recursion, no libFuzzer runs), then runs the
 # ctest tests whose names match the regular expression TESTS, with
 # MIST_STRESS_CALLS=STRESS_CALLS for the stress test.  Exits 77 (ctest:
 # skipped) with a message when CC cannot build and run a program with FLAGS
@@ -20,7 +21,8 @@ then
 fi
 echo "variant $name: $cc $flags"
 cmake -S "$src" -B "$bin" -G "$gen" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Variant \
-      -DCMAKE_C_FLAGS="$flags" -DMIST_BUILD_EXAMPLES=OFF -DMIST_VARIANTS=OFF >"$bin/configure.log" 2>&1 ||
+      -DCMAKE_C_FLAGS="$flags" -DMIST_BUILD_EXAMPLES=OFF -DMIST_ROBUSTNESS=ON \
+      -DMIST_VARIANTS=OFF -DMIST_FUZZ_SECONDS=0 >"$bin/configure.log" 2>&1 ||
     { cat "$bin/configure.log"; exit 1; }
 cmake --build "$bin" -j 2 >"$bin/build.log" 2>&1 || { cat "$bin/build.log"; exit 1; }
 cd "$bin" || exit 1
