@@ -2,6 +2,9 @@
  * functions, beside baselines measured in the same run:
  *   - the paper's formulas typed in as printed ([JD23] eq. 2-3 for HG, eq. 6
  *     for Draine), which are what mist's stable forms replace;
+ *   - the cheap alternatives a renderer might use instead (HG alone, a
+ *     Schlick lobe, a 256-entry table: tests/mist_alt.h), and the droplet
+ *     fits typed in as printed;
  * Each figure: median of 15 timed repetitions (after a warm-up) over a
  * stream of 4096 random inputs, with the spread (min..max of the
  * repetitions).  Run: ./build/mist_bench  (see README.md). */
@@ -9,6 +12,7 @@
 #include "mist.h"
 #include "mist_mie.h"
 #include "mist_printed.h"
+#include "mist_alt.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -94,6 +98,65 @@ static double b_hg_sample_dirf(void)
         s += wo.x + pdf;
     }
     return s;
+}
+
+/* ---- the cheap alternatives (tests/mist_alt.h), the same streams -------- */
+
+static float alt_k;                 /* Schlick's k for g = 0.8 */
+static alt_lutf alt_fog_lut;        /* the d = 10 um fog, 256 entries */
+static double alt_fog_dens(double u, const void *par)
+{
+    return mist_fog_eval(*(const mist_fog *)par, u);
+}
+static double b_schlick_evalf(void)    LOOP(float, alt_schlick_evalf(alt_k, uf[i]))
+static double b_schlick_samplef(void)  LOOP(float, alt_schlick_samplef(alt_k, xf[i]))
+static double b_lut_evalf(void)        LOOP(float, alt_lut_evalf(&alt_fog_lut, uf[i]))
+static double b_lut_samplef(void)      LOOP(float, alt_lut_samplef(&alt_fog_lut, xf[i]))
+
+/* the droplet fits: mist's (eq. 7-22) against eq. 7-10 typed in as printed
+ * (the 5-50 um range, constants of eq. 8 and 10 outside the exponential) */
+static float fit_printedf(float d)
+{
+    return expf(-0.0990567f / (d - 1.67154f)) + expf(-2.20679f / (d + 3.91029f)) - 0.428934f
+         + expf(3.62489f - 8.29288f / (d + 5.52825f))
+         + expf(-0.599085f / (d - 0.641583f)) - 0.665888f;
+}
+static double b_fit_printedf(void)     LOOP(float, fit_printedf(5 + 45 * xf[i]))
+static double b_fit_mistf(void)
+{
+    float s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mist_fogf f = mist_fog_from_diameterf(5 + 45 * xf[i]);
+        s += f.g_hg + f.g_d + f.alpha + f.w_d;
+    }
+    return s;
+}
+
+static void row(const char *name, bench_fn f, const char *base_name, double base);
+
+static void alternatives(void)
+{
+    double lo, hi, base;
+    mist_fog fog = mist_fog_from_diameter(10);
+    alt_k = alt_schlick_kf(0.8f);
+    alt_fog_lut = alt_lut_buildf(256, alt_fog_dens, &fog);
+    printf("\nThe cheap alternatives a renderer might use instead (tests/mist_alt.h):\n");
+    base = measure(b_hg_evalf, &lo, &hi);
+    row("mist_hg_evalf (g .8)", b_hg_evalf, NULL, 0);
+    row("Schlick eval (k from g .8, float)", b_schlick_evalf, "mist_hg_evalf", base);
+    row("LUT eval, 256 entries (fog 10 um)", b_lut_evalf, "mist_hg_evalf", base);
+    row("mist_fog_evalf (d = 10 um)", b_fog_evalf, "mist_hg_evalf", base);
+    base = measure(b_hg_samplef, &lo, &hi);
+    row("mist_hg_samplef (g .8)", b_hg_samplef, NULL, 0);
+    row("Schlick sample (float)", b_schlick_samplef, "mist_hg_samplef", base);
+    row("LUT inverse CDF, 256 entries (fog)", b_lut_samplef, "mist_hg_samplef", base);
+    row("mist_fog_samplef (d = 10 um)", b_fog_samplef, "mist_hg_samplef", base);
+    base = measure(b_fit_printedf, &lo, &hi);
+    row("fits eq. 7-10 as printed (float)", b_fit_printedf, NULL, 0);
+    row("mist_fog_from_diameterf (5-50 um)", b_fit_mistf, "printed", base);
+    free(alt_fog_lut.p);
+    free(alt_fog_lut.icdf);
 }
 
 /* Lorenz-Mie: one droplet diameter (monodisperse), 1800 angles uniform in
@@ -198,6 +261,7 @@ int main(void)
     row("mist_rayleigh_sample", b_rayleigh_sample, NULL, 0);
     row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, 0);
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, 0);
+    alternatives();
     printf("\nLorenz-Mie (mist_mie.h), one diameter, 1800 angles x 3 wavelengths, "
            "median of 5:\n");
     printf("  d = 10 um: %.2f ms\n  d = 50 um: %.2f ms\n", mie_ms(10), mie_ms(50));

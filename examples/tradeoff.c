@@ -22,7 +22,7 @@
  *                curve: a coarse grid, then a compass search, minimising
  *                logRMS;
  *   Schlick      (1-k^2) / (4 pi (1 - k u)^2), k = 1.55g - 0.55g^3 (the
- *                usual mapping from g), written here: it is NOT in mist.
+ *                usual mapping from g), from tests/mist_alt.h: NOT in mist.
  *                It integrates to 1 as written; its inverse CDF is
  *                u = (2 xi - 1 + k) / (1 - k + 2 k xi);
  *   XLF          the blog's "Xiao-Lei Fan" function, as its code prints it:
@@ -61,6 +61,7 @@
 #include "mist_fitref.h"
 #include "mist_ref.h"
 #include "mist_printed.h"
+#include "mist_alt.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -124,17 +125,6 @@ static void machine(void)
 /* ======================================================================== */
 /* Models written here                                                      */
 /* ======================================================================== */
-
-static double schlick_eval(double k, double u)
-{
-    double d = 1 - k * u;
-    return (1 - k * k) / (4 * PI * d * d);
-}
-
-static double schlick_sample(double k, double xi)
-{
-    return (2 * xi - 1 + k) / (1 - k + 2 * k * xi);
-}
 
 /* the blog's code, as printed (see the top) */
 static double xlf_eval(double g, double u)
@@ -330,7 +320,7 @@ static double model_eval(int m, const diam *q, double u)
     case M_HG:  return mist_hg_eval(q->g_mie, u);
     case M_CS:  return mist_cs_eval(q->g_cs, u);
     case M_DR:  return mist_draine_eval(q->g_dr, q->a_dr, u);
-    case M_SCH: return schlick_eval(q->k_sch, u);
+    case M_SCH: return alt_schlick_eval(q->k_sch, u);
     case M_XLF: return xlf_eval(q->g_mie, u);
     case M_FOG: return mist_fog_eval(q->fog, u);
     default: {
@@ -352,7 +342,7 @@ static int cn;
 static double t_hg_e(void)   LOOP(double, mist_hg_eval(cg, ub[i]))
 static double t_cs_e(void)   LOOP(double, mist_cs_eval(cg, ub[i]))
 static double t_dr_e(void)   LOOP(double, mist_draine_eval(cg, ca, ub[i]))
-static double t_sch_e(void)  LOOP(double, schlick_eval(ck, ub[i]))
+static double t_sch_e(void)  LOOP(double, alt_schlick_eval(ck, ub[i]))
 static double t_xlf_e(void)  LOOP(double, xlf_eval(cg, ub[i]))
 static double t_fog_e(void)  LOOP(double, mist_fog_eval(cfog, ub[i]))
 static double t_lutt_e(void) LOOP(double, lut_theta_eval(ct, cn, ub[i]))
@@ -360,7 +350,7 @@ static double t_lutw_e(void) LOOP(double, lut_warp_eval(ct, cn, ub[i]))
 static double t_hg_s(void)   LOOP(double, mist_hg_sample(cg, xb[i]))
 static double t_cs_s(void)   LOOP(double, mist_cs_sample(cg, xb[i]))
 static double t_dr_s(void)   LOOP(double, mist_draine_sample(cg, ca, xb[i]))
-static double t_sch_s(void)  LOOP(double, schlick_sample(ck, xb[i]))
+static double t_sch_s(void)  LOOP(double, alt_schlick_sample(ck, xb[i]))
 static double t_fog_s(void)  LOOP(double, mist_fog_sample(cfog, xb[i]))
 
 /* Part 2 samplers */
@@ -754,7 +744,7 @@ int main(int argc, char **argv)
         if (!nodes || !vals) return 1;
         q->g_mie = fitref_mie(DS[k], ref[k], N_RADII);
         q->g_cs = cs_g_for(q->g_mie);
-        q->k_sch = 1.55 * q->g_mie - 0.55 * q->g_mie * q->g_mie * q->g_mie;
+        q->k_sch = alt_schlick_k(q->g_mie);
         q->fog = mist_fog_from_diameter(DS[k]);
         draine_fit(ref[k], &q->g_dr, &q->a_dr);
         for (w = 0; w < 2; ++w)
