@@ -5,6 +5,11 @@
  *   - the cheap alternatives a renderer might use instead (HG alone, a
  *     Schlick lobe, a 256-entry table: tests/mist_alt.h), and the droplet
  *     fits typed in as printed;
+ *   - HG against its bare formula, scalar against scalar (NOVEC below) and
+ *     vector against vector; the batch forms against a loop of scalar calls;
+ *   - the object-code size of a translation unit using one function
+ *     (bench/size_one.c) against one using everything (bench/size_all.c),
+ *     built by CMake at this benchmark's flags (MIST_BENCH_FLAGS, printed).
  * Each figure: median of 15 timed repetitions (after a warm-up) over a
  * stream of 4096 random inputs, with the spread (min..max of the
  * repetitions).  Run: ./build/mist_bench  (see README.md). */
@@ -54,7 +59,27 @@ static double measure(bench_fn f, double *lo, double *hi)
     return t[REPS / 2];
 }
 
-#define LOOP(T, EXPR) { T s = 0; int i; for (i = 0; i < N; ++i) s += EXPR; return (double)s; }
+/* A scalar figure is the cost of one call: each result is stored (no sum
+ * whose add chain would bound the loop), and NOVEC, an empty asm that
+ * claims to change the value, keeps the compiler from vectorising the loop,
+ * for mist and for the baselines alike (a vectorised baseline beside a
+ * scalar mist call was the old eq. 3 row: 0.68 ns).  The batch rows below
+ * compare vector code with vector code.  Where NOVEC is empty (not gcc or
+ * clang on x86-64 or AArch64) the output says so. */
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
+#  define NOVEC(v) __asm__("" : "+x"(v))
+#  define NOVEC_OK 1
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
+#  define NOVEC(v) __asm__("" : "+w"(v))
+#  define NOVEC_OK 1
+#else
+#  define NOVEC(v) ((void)0)
+#  define NOVEC_OK 0
+#endif
+static float  out_float[N];
+static double out_double[N];
+#define LOOP(T, EXPR) { int i; for (i = 0; i < N; ++i) { T v_ = EXPR; NOVEC(v_); \
+                        out_##T[i] = v_; } return (double)out_##T[N / 2]; }
 
 static double b_hg_eval_printed(void)  LOOP(float, hg_eval_printed(0.8f, uf[i]))
 static double b_hg_evalf(void)         LOOP(float, mist_hg_evalf(0.8f, uf[i]))
@@ -88,6 +113,40 @@ static double b_fog_evalf(void)
     mist_fogf fog = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
     LOOP(float, mist_fog_evalf(fog, uf[i]))
 }
+/* prepared phase functions (mist_phase_*): prepared once per stream, as a
+ * renderer prepares once per medium.  The unprepared baselines here read
+ * their parameters at run time (volatile), as a renderer does: with
+ * literal constants the compiler folds the parameter-only work out of the
+ * loop, which is the saving preparation makes by hand. */
+static mist_phasef ph_hgf, ph_drf, ph_fogf;
+static mist_phase  ph_dr;
+static volatile float rt_g = 0.8f, rt_gd = 0.5f, rt_a = 17.f;
+static volatile float rt_fog[4] = { 0.988f, 0.556f, 22.0f, 0.482f };
+#define LOOP_RT(T, SETUP, EXPR) { int i; SETUP; for (i = 0; i < N; ++i) { T v_ = EXPR; \
+                                  NOVEC(v_); out_##T[i] = v_; } return (double)out_##T[N / 2]; }
+static double b_hg_evalf_unprep(void)  LOOP_RT(float, float g = rt_g, mist_hg_evalf(g, uf[i]))
+static double b_hg_samplef_unprep(void) LOOP_RT(float, float g = rt_g, mist_hg_samplef(g, xf[i]))
+static double b_draine_evalf_rt(void)  LOOP_RT(float, float g = rt_gd; float a = rt_a,
+                                               mist_draine_evalf(g, a, uf[i]))
+static double b_draine_samplef_rt(void) LOOP_RT(float, float g = rt_gd; float a = rt_a,
+                                                mist_draine_samplef(g, a, xf[i]))
+static double b_draine_sample_rt(void) LOOP_RT(double, double g = rt_gd; double a = rt_a,
+                                               mist_draine_sample(g, a, xd[i]))
+static double b_fog_evalf_rt(void)     LOOP_RT(float, mist_fogf fog = mist_fog_makef(rt_fog[0],
+                                               rt_fog[1], rt_fog[2], rt_fog[3]),
+                                               mist_fog_evalf(fog, uf[i]))
+static double b_fog_samplef_rt(void)   LOOP_RT(float, mist_fogf fog = mist_fog_makef(rt_fog[0],
+                                               rt_fog[1], rt_fog[2], rt_fog[3]),
+                                               mist_fog_samplef(fog, xf[i]))
+static double b_phase_hg_evalf(void)   LOOP(float, mist_phase_evalf(&ph_hgf, uf[i]))
+static double b_phase_hg_samplef(void) LOOP(float, mist_phase_samplef(&ph_hgf, xf[i]))
+static double b_phase_draine_evalf(void) LOOP(float, mist_phase_evalf(&ph_drf, uf[i]))
+static double b_phase_draine_samplef(void) LOOP(float, mist_phase_samplef(&ph_drf, xf[i]))
+static double b_phase_draine_sample(void) LOOP(double, mist_phase_sample(&ph_dr, xd[i]))
+static double b_phase_fog_evalf(void)  LOOP(float, mist_phase_evalf(&ph_fogf, uf[i]))
+static double b_phase_fog_samplef(void) LOOP(float, mist_phase_samplef(&ph_fogf, xf[i]))
+
+static void prepared_rows(void);
 static double b_hg_sample_dirf(void)
 {
     mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
@@ -212,6 +271,224 @@ static void machine(void)
 #ifdef __VERSION__
     printf("compiler: %s\n", __VERSION__);
 #endif
+#ifdef MIST_BENCH_FLAGS
+    printf("flags: %s\n", MIST_BENCH_FLAGS);
+#endif
+    printf("SIMD: %s\n",
+#if defined(__AVX512F__)
+           "AVX-512 (512-bit vectors)"
+#elif defined(__AVX2__)
+           "AVX2 (256-bit vectors)"
+#elif defined(__AVX__)
+           "AVX (256-bit vectors)"
+#elif defined(__SSE2__)
+           "SSE2 (128-bit vectors): build with -march=native for more"
+#elif defined(__ARM_NEON)
+           "NEON (128-bit vectors)"
+#else
+           "none known"
+#endif
+           );
+}
+
+/* Prepared (mist_phase_*) against unprepared, same parameters, same run:
+ * the ratio is the saving of preparing once per medium. */
+static void prepared_rows(void)
+{
+    double lo, hi, base;
+    ph_hgf = mist_phase_hgf(0.8f);
+    ph_drf = mist_phase_drainef(0.5f, 17.f);
+    ph_dr  = mist_phase_draine(0.5, 17.);
+    ph_fogf = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
+    printf("\nprepared (mist_phase_*) vs unprepared:\n");
+    base = measure(b_hg_evalf_unprep, &lo, &hi);
+    row("mist_phase_evalf (HG .8)", b_phase_hg_evalf, "mist_hg_evalf", base);
+    base = measure(b_hg_samplef_unprep, &lo, &hi);
+    row("mist_phase_samplef (HG .8)", b_phase_hg_samplef, "mist_hg_samplef", base);
+    base = measure(b_draine_evalf_rt, &lo, &hi);
+    row("mist_phase_evalf (Draine .5, 17)", b_phase_draine_evalf, "mist_draine_evalf", base);
+    base = measure(b_draine_samplef_rt, &lo, &hi);
+    row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "mist_draine_samplef",
+        base);
+    base = measure(b_draine_sample_rt, &lo, &hi);
+    row("mist_phase_sample (Draine .5, 17)", b_phase_draine_sample, "mist_draine_sample", base);
+    base = measure(b_eq6f, &lo, &hi);
+    row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "eq. 6 float", base);
+    base = measure(b_fog_evalf_rt, &lo, &hi);
+    row("mist_phase_evalf (fog, 10 um)", b_phase_fog_evalf, "mist_fog_evalf", base);
+    base = measure(b_fog_samplef_rt, &lo, &hi);
+    row("mist_phase_samplef (fog, 10 um)", b_phase_fog_samplef, "mist_fog_samplef", base);
+}
+
+/* ---- HG against its bare formula; the batch forms -------------------- */
+
+/* The bare formulas in each type: HG [JD23 eq. 2] with V^3 = V^2 sqrt(V^2)
+ * (the printed pow is slower), and eq. 3 as printed (with its g ~ 0
+ * fallback; the float one is hg_sample_printed). */
+static float hg_eval_baref(float g, float u)
+{
+    float v2 = 1 + g * g - 2 * g * u;
+    return (1 - g * g) * (float)MIST__INV4PI / (v2 * sqrtf(v2));
+}
+static double hg_eval_bare(double g, double u)
+{
+    double v2 = 1 + g * g - 2 * g * u;
+    return (1 - g * g) * MIST__INV4PI / (v2 * sqrt(v2));
+}
+static double hg_sample_bare(double g, double xi)
+{
+    double t;
+    if (fabs(g) < 1e-3) return 2 * xi - 1;
+    t = (1 - g * g) / (1 - g + 2 * g * xi);
+    return (1 + g * g - t * t) / (2 * g);
+}
+static double b_bare_evalf(void)   LOOP(float, hg_eval_baref(0.8f, uf[i]))
+static double b_bare_eval(void)    LOOP(double, hg_eval_bare(0.8, ud[i]))
+static double b_bare_sample(void)  LOOP(double, hg_sample_bare(0.8, xd[i]))
+static double b_rayleigh_evalf(void) LOOP(float, mist_rayleigh_evalf(uf[i]))
+static double b_rayleigh_eval(void)  LOOP(double, mist_rayleigh_eval(ud[i]))
+
+/* the same bare formulas over arrays, vectorised by the compiler */
+#define VLOOP(T, EXPR) { int i; for (i = 0; i < N; ++i) out_##T[i] = EXPR; \
+                         return (double)out_##T[N / 2]; }
+static double v_bare_evalf(void)   VLOOP(float, hg_eval_baref(0.8f, uf[i]))
+static double v_bare_eval(void)    VLOOP(double, hg_eval_bare(0.8, ud[i]))
+static double v_bare_samplef(void) VLOOP(float, hg_sample_printed(0.8f, xf[i]))
+static double v_bare_sample(void)  VLOOP(double, hg_sample_bare(0.8, xd[i]))
+
+/* the batch forms over the same inputs */
+#define NCALL(T, CALL) { CALL; return (double)out_##T[N / 2]; }
+static double n_hg_evalf(void)   NCALL(float, mist_hg_eval_nf(0.8f, uf, out_float, N))
+static double n_hg_eval(void)    NCALL(double, mist_hg_eval_n(0.8, ud, out_double, N))
+static double n_hg_samplef(void) NCALL(float, mist_hg_sample_nf(0.8f, xf, out_float, N))
+static double n_hg_sample(void)  NCALL(double, mist_hg_sample_n(0.8, xd, out_double, N))
+static double n_draine_evalf(void) NCALL(float, mist_draine_eval_nf(0.5f, 17.f, uf, out_float, N))
+static double n_draine_eval(void)  NCALL(double, mist_draine_eval_n(0.5, 17., ud, out_double, N))
+static double n_draine_samplef(void) NCALL(float, mist_draine_sample_nf(0.5f, 17.f, xf, out_float, N))
+static double n_draine_sample(void)  NCALL(double, mist_draine_sample_n(0.5, 17., xd, out_double, N))
+static double n_rayleigh_evalf(void) NCALL(float, mist_rayleigh_eval_nf(uf, out_float, N))
+static double n_rayleigh_eval(void)  NCALL(double, mist_rayleigh_eval_n(ud, out_double, N))
+static double n_rayleigh_samplef(void) NCALL(float, mist_rayleigh_sample_nf(xf, out_float, N))
+static double n_rayleigh_sample(void)  NCALL(double, mist_rayleigh_sample_n(xd, out_double, N))
+
+/* a row whose ratio is a speed-up: the baseline's time over this one's */
+static void row_speedup(const char *name, bench_fn f, bench_fn scalar)
+{
+    double lo, hi, s = measure(scalar, &lo, &hi), m = measure(f, &lo, &hi);
+    printf("%-34s %8.2f  [%6.2f..%6.2f]  %5.2fx the scalar loop (%.2f ns)\n",
+           name, m, lo, hi, s / m, s);
+}
+
+static void hg_target_rows(void)
+{
+    double lo, hi, b;
+    printf("\nHG against the bare formula (eq. 2 with sqrt, eq. 3), same type, "
+           "same loop;\nscalar loops %s, vector loops vectorised by the compiler:\n",
+           NOVEC_OK ? "kept scalar (NOVEC)" : "MAY BE VECTORISED (no NOVEC here)");
+    b = measure(b_bare_evalf, &lo, &hi);
+    row("bare HG eval (float, scalar)", b_bare_evalf, NULL, 0);
+    row("mist_hg_evalf", b_hg_evalf, "bare", b);
+    b = measure(b_bare_eval, &lo, &hi);
+    row("bare HG eval (double, scalar)", b_bare_eval, NULL, 0);
+    row("mist_hg_eval", b_hg_eval, "bare", b);
+    b = measure(b_hg_sample_printed, &lo, &hi);
+    row("eq. 3 HG sample (float, scalar)", b_hg_sample_printed, NULL, 0);
+    row("mist_hg_samplef", b_hg_samplef, "eq. 3", b);
+    b = measure(b_bare_sample, &lo, &hi);
+    row("eq. 3 HG sample (double, scalar)", b_bare_sample, NULL, 0);
+    row("mist_hg_sample", b_hg_sample, "eq. 3", b);
+    b = measure(v_bare_evalf, &lo, &hi);
+    row("bare HG eval (float, vector)", v_bare_evalf, NULL, 0);
+    row("mist_hg_eval_nf", n_hg_evalf, "bare", b);
+    b = measure(v_bare_eval, &lo, &hi);
+    row("bare HG eval (double, vector)", v_bare_eval, NULL, 0);
+    row("mist_hg_eval_n", n_hg_eval, "bare", b);
+    b = measure(v_bare_samplef, &lo, &hi);
+    row("eq. 3 HG sample (float, vector)", v_bare_samplef, NULL, 0);
+    row("mist_hg_sample_nf", n_hg_samplef, "eq. 3", b);
+    b = measure(v_bare_sample, &lo, &hi);
+    row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, 0);
+    row("mist_hg_sample_n", n_hg_sample, "eq. 3", b);
+}
+
+static void batch_rows(void)
+{
+    printf("\nBatch forms (ns per element, n = %d) against a loop of scalar calls:\n", N);
+    row_speedup("mist_hg_eval_nf", n_hg_evalf, b_hg_evalf);
+    row_speedup("mist_hg_eval_n", n_hg_eval, b_hg_eval);
+    row_speedup("mist_hg_sample_nf", n_hg_samplef, b_hg_samplef);
+    row_speedup("mist_hg_sample_n (long double)", n_hg_sample, b_hg_sample);
+    row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
+    row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
+    row_speedup("mist_draine_sample_nf (loop)", n_draine_samplef, b_draine_samplef);
+    row_speedup("mist_draine_sample_n  (loop)", n_draine_sample, b_draine_sample);
+    row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
+    row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
+    row_speedup("mist_rayleigh_sample_nf (loop)", n_rayleigh_samplef, b_rayleigh_samplef);
+    row_speedup("mist_rayleigh_sample_n  (loop)", n_rayleigh_sample, b_rayleigh_sample);
+}
+
+/* ---- object-code size ---------------------------------------------------- */
+
+/* Sizes of an object file: the whole file, and for ELF64 little-endian (no
+ * binutils needed) the bytes of its executable sections and of its other
+ * allocated ones (constants, data).  Returns 0 when it cannot be read. */
+#if defined(MIST_SIZE_ONE) && defined(MIST_SIZE_ALL)
+static int object_size(const char *path, long *file, long *text, long *other)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *b;
+    long n, i;
+    *file = *text = *other = -1;
+    if (!f) return 0;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b = (unsigned char *)malloc(n > 0 ? (size_t)n : 1);
+    if (!b || fread(b, 1, (size_t)n, f) != (size_t)n) { fclose(f); free(b); return 0; }
+    fclose(f);
+    *file = n;
+    if (n > 64 && b[0] == 0x7f && b[1] == 'E' && b[2] == 'L' && b[3] == 'F'
+        && b[4] == 2 && b[5] == 1) {                    /* ELF64, little-endian */
+        long shoff = 0, shent = b[0x3a] | b[0x3b] << 8, shnum = b[0x3c] | b[0x3d] << 8;
+        for (i = 7; i >= 0; --i) shoff = shoff << 8 | b[0x28 + i];
+        *text = *other = 0;
+        for (i = 0; i < shnum && shoff + (i + 1) * shent <= n; ++i) {
+            const unsigned char *s = b + shoff + i * shent;
+            long flags = 0, size = 0, k;
+            for (k = 7; k >= 0; --k) flags = flags << 8 | s[8 + k];
+            for (k = 7; k >= 0; --k) size = size << 8 | s[32 + k];
+            if (flags & 4) *text += size;               /* SHF_EXECINSTR */
+            else if (flags & 2) *other += size;         /* SHF_ALLOC */
+        }
+    }
+    free(b);
+    return 1;
+}
+#endif
+
+static void size_rows(void)
+{
+#if defined(MIST_SIZE_ONE) && defined(MIST_SIZE_ALL)
+    const char *path[2] = { MIST_SIZE_ONE, MIST_SIZE_ALL };
+    const char *what[2] = { "bench/size_one.c (mist_hg_evalf only)",
+                            "bench/size_all.c (every function)" };
+    int i;
+    printf("\nObject-code size, compiled as this benchmark (bytes):\n");
+    for (i = 0; i < 2; ++i) {
+        long file, text, other;
+        if (!object_size(path[i], &file, &text, &other))
+            printf("  %-40s cannot read %s\n", what[i], path[i]);
+        else if (text >= 0)
+            printf("  %-40s code %7ld  other allocated %6ld  (object file %7ld)\n",
+                   what[i], text, other, file);
+        else
+            printf("  %-40s object file %7ld (not ELF64: code size not read)\n",
+                   what[i], file);
+    }
+#else
+    printf("\nObject-code size: build the benchmark with CMake (mist_size_one/all)\n");
+#endif
 }
 
 int main(void)
@@ -261,7 +538,11 @@ int main(void)
     row("mist_rayleigh_sample", b_rayleigh_sample, NULL, 0);
     row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, 0);
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, 0);
+    prepared_rows();
     alternatives();
+    hg_target_rows();
+    batch_rows();
+    size_rows();
     printf("\nLorenz-Mie (mist_mie.h), one diameter, 1800 angles x 3 wavelengths, "
            "median of 5:\n");
     printf("  d = 10 um: %.2f ms\n  d = 50 um: %.2f ms\n", mie_ms(10), mie_ms(50));

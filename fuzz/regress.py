@@ -167,6 +167,97 @@ CASES = {
         # NaN: (length w0) s0 + (length w1) s1 = -inf + inf (exact: -9.5e309, -inf)
         'segment-nan-d': segment('d', 0.0, 0.0, '-0x1.ce5beeea71fdep+8', '0x1.641a732a51c14p+8',
                                  '0x1.ffffffffffffep+1023'),
+        # --- issue 6, fixed in the stress test's last round (each failed before) ---
+        # (a) the direction's normalised y underflows to 0 (a level ray, the
+        # documented convention): to infinity, C = +inf and T = 0 (was
+        # 0.0032: y taken as +TMIN, a ray going up; H subnormal too)
+        'level-underflow-f': hfog('f', base='-0x1.2f7e1p+6', density='0x1.ed6ee4p-8',
+                                  H='0x1.fffffcp-127', rs=('0x1.5f56ap-15',) * 3,
+                                  re=('0x1.ea1ab6p-15',) * 3, ms=('0x1.10c0cp-15',) * 3,
+                                  me=(0.0, 0.0, 0.0), origin=(1.0, '-0x1.2f7e1p+6', 2.0),
+                                  dir=('-0x1.fffffcp+127', '0x1p-149', '0x1.000002p+1'),
+                                  length=math.inf),
+        # (b) the same with a density far below the range at the camera
+        # (e^-790): any positive density over an infinite level path, T = 0
+        # (was 1)
+        'level-underflow-thin-f': hfog('f', base='0x1.0e88dep+6', density='0x1.7d669p-6',
+                                       H='0x1.d0a43ep-2', origin=(1.0, '0x1.a9345cp+8', 2.0),
+                                       dir=('-0x1.c1b0cap+122', '0x1.0c90cp-40', '-0x1.bfbe24p-116'),
+                                       length=math.inf),
+        'level-underflow-thin-d': hfog('d', base=0.0, density=1.0, H=1.0,
+                                       origin=(0.0, 800.0, 0.0),
+                                       dir=(-0.5, '0x0.0000000000001p-1022', -2.0),
+                                       length=math.inf),
+        # a subnormal extinction through a column beyond the range (density
+        # DBL_MAX): T = 1 - 4e-15 (was 0: the column alone overflowed)
+        'col-overflow-tiny-ext-d': hfog('d', base='0x1.fa7118f215868p+4',
+                                        density='0x1.fffffffffffffp+1023', H='0x1.659cb120c4132p+14',
+                                        rs=(0.0, 0.0, '0x0.0000000000001p-1022'),
+                                        re=(0.0, 0.0, '0x0.0000000000001p-1022'),
+                                        ms=(0.0, 0.0, 0.0), me=(0.0, 0.0, 0.0), sun_ext=1,
+                                        origin=(1.0, '0x1.dbbc5cff2b657p-920', 2.0),
+                                        dir=('0x1.1fc5ddec79e58p-1011', '-0x1.dcde6e3d17218p-1011',
+                                             '-0x1.ada39852b1513p-1010'),
+                                        length='0x1.2b94b8f74f39cp+2'),
+        # float: T = 0.27 (was 0), the column e^155 over float's range
+        'col-overflow-tiny-ext-f': hfog('f', base='0x1.0fa74ap+6', density='0x1.a2f5bp-8',
+                                        H='0x1.baf17p-2', rs=(0.0, '0x1p-149', 0.0),
+                                        re=(0.0, 0.0, 0.0), ms=(0.0, 0.0, 0.0), me=(0.0, 0.0, 0.0),
+                                        sun_ext=1, origin=(1.0, '0x1.de6e9ap-7', 2.0),
+                                        dir=('-0x1.34c6bcp-1', '0x1p-11', '0x1.9869b6p-1'),
+                                        length='0x1.292c1p-70'),
+        # the extinction R + M beyond the range (2 DBL_MAX, albedo 1), the
+        # sun straight ahead (u = 1): the albedos sR/st + sM/st were 2 (the
+        # sum clamped, not the scatterings), L above E max p (1 - T)
+        'ext-sum-overflow-d': hfog('d', rs=('0x1.ffffffffffffep+1023',) * 3,
+                                   re=(825.0, 825.0, 825.0),
+                                   ms=('0x1.ffffffffffffep+1023',) * 3,
+                                   me=(787.0, 787.0, 787.0), ambient=(0.0, 0.0, 0.0),
+                                   dir=(0.6, 0.48, 0.64), length=1000.0),
+        # (d) scale heights: subnormal (the exponent's low part is divided
+        # by it: now scaled first) and the largest finite value, each on a
+        # ray up, down and level, finite and infinite (edge coverage: these
+        # passed before too; the failures with such H were (a)'s)
+        'h-subnormal-d': b''.join(hfog('d', H='0x0.0000000000001p-1022', base=0.0,
+                                       origin=(0.0, y, 0.0), dir=dv, length=ln)
+                                  for y in (0.0, '0x0.0000000000003p-1022', '-0x0.0000000000002p-1022')
+                                  for dv in (down(0.5), down(-0.5), (1.0, 0.0, 0.0))
+                                  for ln in (1.0, math.inf)),
+        'h-subnormal-f': b''.join(hfog('f', H='0x1p-149', base=0.0, origin=(0.0, y, 0.0),
+                                       dir=dv, length=ln)
+                                  for y in (0.0, '0x1.8p-148', '-0x1p-148')
+                                  for dv in (down(0.5), down(-0.5), (1.0, 0.0, 0.0))
+                                  for ln in (1.0, math.inf)),
+        'h-max-d': b''.join(hfog('d', H='0x1.fffffffffffffp+1023', base=0.0,
+                                 origin=(0.0, y, 0.0), dir=dv, length=ln)
+                            for y in (0.0, 1e308, -1e308)
+                            for dv in (down(0.5), down(-0.5), (1.0, 0.0, 0.0))
+                            for ln in (1.0, 1e308, math.inf)),
+        'h-max-f': b''.join(hfog('f', H='0x1.fffffep+127', base=0.0, origin=(0.0, y, 0.0),
+                                 dir=dv, length=ln)
+                            for y in (0.0, 3e38, -3e38)
+                            for dv in (down(0.5), down(-0.5), (1.0, 0.0, 0.0))
+                            for ln in (1.0, 3e38, math.inf)),
+        # a ray down from DBL_MAX to 0 (w len = -DBL_MAX): Dekker's split of
+        # w len overflowed, the low part (which held the whole exponent
+        # -2.6e169) became NaN and was dropped: column 7e4 for +inf
+        'col-dekker-overflow-d': hfog('d', base='0x1.a29bb1f8316d3p+570',
+                                      density='0x1.9d0f8e72afb1ap+9', H='0x1.54p+6',
+                                      origin=(1.0, '0x1.ffffffffffffep+1023', 2.0),
+                                      dir=(0.0, -1.0, 0.0), w=-1.0,
+                                      length='0x1.ffffffffffffep+1023'),
+        # mist_hfog_layers_eval, a fog at extinction 1e295 split into its
+        # Rayleigh and Mie layers (the exact case): the shares came from
+        # logs, 250 eps off, outside the bound (now: scaled optical depths)
+        'layers-log-weights-d': layers('d', -1, dict(
+            base='-0x1.f7ddfdea61eecp+5', density='0x1.2f9888d6fda8bp+1',
+            H='0x1.b4fbc70644551p+15', rs=('0x1.0670137110671p-8', 0.02, 0.04),
+            re=('0x1.9a4e8060ff8cfp-8', 0.02, 0.04), ms=('0x1.93e30f0c78488p-100', 0.05, 0.05),
+            me=('0x1.2ee394251b524p+981', 0.06, 0.06), sun=('0x1.d4faa8843df04p+2', 5.0, 5.0),
+            ambient=('0x1.5a86c0e35e368p+1', 1.0, 1.0), sun_ext=1,
+            sun_dir=(0.0, '0x1.76d8daf5c7473p-1', 0.6), origin=(0.0, '-0x1.5298cc2fa7a6dp+25', 0.0),
+            dir=('-0x1.74d2e15ee2cd5p+449', '0x1.a00568740f026p+450', '0x1.d22331793e2b4p+449'),
+            length='0x1.694bd6d6a0787p-4')),
         # in-scattering NaN: sigma_t subnormal (1 / sigma_t overflows), ambient 0
         'ls-nan-f': hfog('f', base='-0x1.b73738p+3', density='0x1.b36446p-5', H='0x1.dcdcdcp+93',
                          rs=('0x1.fedcp-134', 0.0, 0.0), re=('0x1.fedcp-134', 0.0, 0.0),

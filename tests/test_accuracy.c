@@ -11,7 +11,9 @@
  * float function actually receives.
  *
  * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
- * and the Dirac limits |g| = 1.  Mirrors the "exact sampling" sections of
+ * and the Dirac limits |g| = 1; alpha from 1e4 to 1e30 and +inf with |g| <=
+ * 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); and all of it
+ * again through the prepared phase functions (mist_phase_*).  Mirrors the "exact sampling" sections of
  * include/mist.h. */
 #include "mist.h"
 #include "mist_ref.h"
@@ -25,8 +27,17 @@ static const char *kind_name[] = { "hg", "draine", "cs", "rayleigh" };
 static double ulp_d(double x) { x = fabs(x); return nextafter(x, INFINITY) - x; }
 static double ulp_f(float x)  { x = fabsf(x); return (double)(nextafterf(x, INFINITY) - x); }
 
+/* 1: sample through the prepared phase functions (mist_phase_*) instead */
+static int use_prep = 0;
+
 static double sample_d(int kind, double g, double a, double xi)
 {
+    if (use_prep) {
+        mist_phase p = kind == KIND_HG ? mist_phase_hg(g)
+                     : kind == KIND_DRAINE ? mist_phase_draine(g, a)
+                     : kind == KIND_CS ? mist_phase_cs(g) : mist_phase_rayleigh();
+        return mist_phase_sample(&p, xi);
+    }
     switch (kind) {
     case KIND_HG:     return mist_hg_sample(g, xi);
     case KIND_DRAINE: return mist_draine_sample(g, a, xi);
@@ -37,6 +48,12 @@ static double sample_d(int kind, double g, double a, double xi)
 
 static float sample_f(int kind, float g, float a, float xi)
 {
+    if (use_prep) {
+        mist_phasef p = kind == KIND_HG ? mist_phase_hgf(g)
+                      : kind == KIND_DRAINE ? mist_phase_drainef(g, a)
+                      : kind == KIND_CS ? mist_phase_csf(g) : mist_phase_rayleighf();
+        return mist_phase_samplef(&p, xi);
+    }
     switch (kind) {
     case KIND_HG:     return mist_hg_samplef(g, xi);
     case KIND_DRAINE: return mist_draine_samplef(g, a, xi);
@@ -45,11 +62,13 @@ static float sample_f(int kind, float g, float a, float xi)
     }
 }
 
-/* the (g, alpha) the reference must use for each kind */
-static void ref_params(int kind, double g, double a, double *rg, double *ra)
+/* the (g, alpha) the reference must use for each kind; alpha = +inf (the
+ * limit HG u^2) as 1e900, beyond which no double or float xi can tell */
+static void ref_params(int kind, double g, double a, double *rg, qreal *ra)
 {
     *rg = kind == KIND_RAYLEIGH ? 0 : g;
     *ra = kind == KIND_HG ? 0 : (kind == KIND_DRAINE ? a : 1);
+    if (*ra > 1e308) *ra = (qreal)1e300 * (qreal)1e300 * (qreal)1e300;
 }
 
 static double worst_d = 0, worst_f = 0;
@@ -58,7 +77,8 @@ static long n_points = 0;
 /* Checks one xi in both precisions; returns 1 if both meet the bar. */
 static int check_point(int kind, double g, double a, double xi)
 {
-    double rg, ra, u, us, tol, r;
+    double rg, u, us, tol, r;
+    qreal ra;
     float gf = (float)g, af = (float)a, xf = (float)xi, uf;
     int ok = 1;
     ++n_points;
@@ -201,11 +221,70 @@ static void test_monotone(void)
             }
 }
 
+/* Issue 2: alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
+ * c0 = 1/alpha -> 0: near u = 0 the CDF has an (almost) triple point, and
+ * a solver that judged convergence by the density at its iterate stopped
+ * far from the root (-0.0208 for -0.00366 at g = 0, alpha = 2^20, xi =
+ * 1/2 - 2^-25 in float).  xi within a few ulps of 1/2 and of F(0) (the
+ * float128 reference's), every alpha from 1e4 to 1e30 and +inf, and the
+ * samples must be monotone over runs of adjacent xi there. */
+static void test_huge_alpha(void)
+{
+    static const double as[] = { 1e4, 1e5, 0x1p20, 3e6, 1e8, 0x1p40, 1e12, 1e20, 1e30,
+                                 INFINITY };
+    static const double gs[] = { 0, 4.9406564584124654e-324, -4.9406564584124654e-324,
+                                 1e-40, -1e-40, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3 };
+    size_t ia, ig;
+    int k, c, j, bad_d, bad_f;
+    for (ia = 0; ia < sizeof as / sizeof *as; ++ia)
+        for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig) {
+            double g = gs[ig], a = as[ia];
+            qreal qa = a > 1e308 ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
+            double f0 = (double)ref_cdf(g, qa, 0);
+            float f0f = (float)ref_cdf((float)g, a > 1e308 ? qa : (float)a, 0);
+            for (c = 0; c < 2; ++c) {           /* around 1/2, around F(0) */
+                double x = c ? f0 : 0.5, prev = -2;
+                float xf = c ? f0f : 0.5f, prevf = -2;
+                for (k = 0; k < 6; ++k) { x = nextafter(x, 0); xf = nextafterf(xf, 0); }
+                bad_d = bad_f = 0;
+                for (j = 0; j < 13; ++j) {
+                    double u = sample_d(KIND_DRAINE, g, a, x);
+                    float uf = sample_f(KIND_DRAINE, (float)g, (float)a, xf);
+                    check_point(KIND_DRAINE, g, a, x);
+                    if ((float)x != xf) check_point(KIND_DRAINE, xf, (float)a, xf);
+                    bad_d += u < prev; prev = u;
+                    bad_f += uf < prevf; prevf = uf;
+                    x = nextafter(x, 1); xf = nextafterf(xf, 1);
+                }
+                mt_check(bad_d == 0 && bad_f == 0, "draine g=%g alpha=%g monotone in xi "
+                         "near %s (%d double, %d float decreases)", g, a,
+                         c ? "F(0)" : "1/2", bad_d, bad_f);
+            }
+        }
+}
+
+/* The reported failures themselves (independent float128 values). */
+static void test_issue2_points(void)
+{
+    check_point(KIND_DRAINE, 0, 0x1p20, 0x1.fffffep-2);
+    check_point(KIND_DRAINE, 0, 0x1p40, 0x1.fffffffffffffp-2);
+}
+
 int main(void)
 {
     int kind;
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         test_grid(kind, kind == KIND_DRAINE ? 150 : 400);
+    test_issue2_points();
+    test_huge_alpha();
+    /* the prepared phase functions (mist_phase_*): the same bar */
+    use_prep = 1;
+    for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
+        test_grid(kind, kind == KIND_DRAINE ? 60 : 100);
+    test_huge_alpha();
+    test_random_params(1000);
+    test_monotone();
+    use_prep = 0;
     test_random_params(3000);
     test_delta();
     test_monotone();

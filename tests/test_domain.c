@@ -229,8 +229,101 @@ static void test_sweep(void)
     mt_check(badf == 0, "float sweep over domain edges: %d bad results", badf);
 }
 
+/* Prepared phase functions (mist_phase_*): bad parameters and inputs give
+ * what the unprepared functions give (to a few ulps: the prepared density
+ * rounds in another order, and the sampler's F(0) is stored, not
+ * recomputed: 4 ulps allow for both); the Dirac limits exactly; a NULL
+ * phase pointer is isotropic; the pdf reported is mist_phase_eval. */
+static int near_d(double a, double b)
+{
+    if (a == b) return 1;
+    if (!isfinite(a) || !isfinite(b)) return 0;
+    return fabs(a - b) <= 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)) + 4 * 0x1p-1074;
+}
+static int near_f(float a, float b)
+{
+    if (a == b) return 1;
+    if (!isfinite(a) || !isfinite(b)) return 0;
+    return fabsf(a - b) <= 4 * FLT_EPSILON * fmaxf(fabsf(a), fabsf(b)) + 4 * 0x1p-149f;
+}
+
+static void test_prepared(void)
+{
+    static const double gs[] = { NAN, 1.5, -INFINITY, 1, -1, 0.3, -0.999, 0 };
+    static const double as[] = { -3, NAN, 0, INFINITY, 17, 1e30 };
+    static const double ws[] = { NAN, -1, 2, 0, 1, 0.4 };
+    static const double us[] = { -1.5, NAN, -1, 0.3, 1, 1.0000001, -INFINITY };
+    static const double xs[] = { -0.1, NAN, 0, 0.5, 0.77, 1, 1.5, INFINITY };
+    mist_vec3 wi = { 0.3, -0.4, 0.5 };
+    size_t ig, ia, iw, k;
+    int bad = 0, badf = 0;
+    for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
+        for (ia = 0; ia < sizeof as / sizeof *as; ++ia)
+            for (iw = 0; iw < sizeof ws / sizeof *ws; ++iw) {
+                double g = gs[ig], a = as[ia];
+                float gf = (float)g, af = (float)a;
+                mist_fog fog = { 0.5, g, a, ws[iw] };
+                mist_fogf fogf = { 0.5f, gf, af, (float)ws[iw] };
+                mist_phase pd = mist_phase_draine(g, a), pf = mist_phase_fog(fog);
+                mist_phase ph = mist_phase_hg(g), pc = mist_phase_cs(g);
+                mist_phasef pdf_ = mist_phase_drainef(gf, af), pff = mist_phase_fogf(fogf);
+                mist_phasef phf = mist_phase_hgf(gf);
+                for (k = 0; k < sizeof us / sizeof *us; ++k) {
+                    double u = us[k];
+                    bad += !near_d(mist_phase_eval(&pd, u), mist_draine_eval(g, a, u));
+                    bad += !near_d(mist_phase_eval(&pf, u), mist_fog_eval(fog, u));
+                    bad += !near_d(mist_phase_eval(&ph, u), mist_hg_eval(g, u));
+                    bad += !near_d(mist_phase_eval(&pc, u), mist_cs_eval(g, u));
+                    badf += !near_f(mist_phase_evalf(&pdf_, (float)u),
+                                    mist_draine_evalf(gf, af, (float)u));
+                    badf += !near_f(mist_phase_evalf(&pff, (float)u),
+                                    mist_fog_evalf(fogf, (float)u));
+                    badf += !near_f(mist_phase_evalf(&phf, (float)u), mist_hg_evalf(gf, (float)u));
+                }
+                for (k = 0; k < sizeof xs / sizeof *xs; ++k) {
+                    double x = xs[k], pdf = -1, uu;
+                    float xf = (float)x;
+                    mist_vec3 o;
+                    bad += !near_d(mist_phase_sample(&pd, x), mist_draine_sample(g, a, x));
+                    bad += !near_d(mist_phase_sample(&pf, x), mist_fog_sample(fog, x));
+                    bad += !near_d(mist_phase_sample(&ph, x), mist_hg_sample(g, x));
+                    bad += !near_d(mist_phase_sample(&pc, x), mist_cs_sample(g, x));
+                    badf += !near_f(mist_phase_samplef(&pdf_, xf), mist_draine_samplef(gf, af, xf));
+                    badf += !near_f(mist_phase_samplef(&pff, xf), mist_fog_samplef(fogf, xf));
+                    badf += !near_f(mist_phase_samplef(&phf, xf), mist_hg_samplef(gf, xf));
+                    o = mist_phase_sample_dir(&pf, wi, x, 0.3, &pdf);
+                    uu = mist_phase_sample(&pf, x);
+                    bad += !(pdf == mist_phase_eval(&pf, uu) && isfinite(o.x) && isfinite(o.z));
+                }
+            }
+    mt_check(bad == 0, "prepared = unprepared over bad input (double): %d differ", bad);
+    mt_check(badf == 0, "prepared = unprepared over bad input (float): %d differ", badf);
+    {   /* Rayleigh, and NULL: isotropic */
+        mist_phase r = mist_phase_rayleigh();
+        mist_phasef rf = mist_phase_rayleighf();
+        double pdf = -1;
+        float pdff = -1;
+        mist_vec3 o = mist_phase_sample_dir(NULL, wi, 0.25, 0.5, &pdf);
+        mist_vec3f wf = { 0, 0, 1 }, of = mist_phase_sample_dirf(NULL, wf, 0.25f, 0.5f, &pdff);
+        mt_check(near_d(mist_phase_eval(&r, 0.3), mist_rayleigh_eval(0.3)) &&
+                 mist_phase_sample(&r, 0.3) == mist_rayleigh_sample(0.3) &&
+                 mist_phase_evalf(&rf, NAN) == 0 &&
+                 mist_phase_samplef(&rf, 0.3f) == mist_rayleigh_samplef(0.3f),
+                 "prepared Rayleigh");
+        mt_check(mist_phase_eval(NULL, 0.7) == 1 / (4 * 3.14159265358979323846) &&
+                 mist_phase_evalf(NULL, -0.2f) == (float)(1 / (4 * 3.14159265358979323846)) &&
+                 mist_phase_eval(NULL, NAN) == 0 &&
+                 mist_phase_sample(NULL, 0.25) == -0.5 && mist_phase_sample(NULL, NAN) == -1 &&
+                 mist_phase_samplef(NULL, 1) == 1 && pdf == mist_phase_eval(NULL, 0) &&
+                 pdff == mist_phase_evalf(NULL, 0) && fabs(len3(o) - 1) < 4 * DBL_EPSILON &&
+                 isfinite(of.x),
+                 "NULL phase: isotropic");
+    }
+}
+
 int main(void)
 {
+    test_prepared();
     test_g();
     test_alpha();
     test_u_xi();

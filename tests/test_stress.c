@@ -19,16 +19,28 @@
  *
  * ENVIRONMENT
  *   MIST_STRESS_CALLS=N  the number of library calls to aim for (default
- *                        1.2e8: 1.3e8 made, 12 s at -O2 on one core, gcc 12
- *                        x86-64; the suite wants at least 1e8).  The edge
- *                        grids always run in full (about 3.5e6 calls); the
- *                        dense grids and the random draws scale with N.
- *                        1e10 is the long run (about 16 minutes).
+ *                        1.2e8: 1.39e8 made, 17.7 s of CPU at -O2 (CMake
+ *                        Release), gcc 12 x86-64, on a 2-core machine
+ *                        shared with other builds; the suite wants at
+ *                        least 1e8).  The edge grids always run in full
+ *                        (about 1.3e7 calls); the dense grids and the random
+ *                        draws scale with N (a dense grid capped by its
+ *                        arrays owes the rest of its share to the random
+ *                        draws after it, st_owe).  The long run:
+ *                          MIST_STRESS_CALLS=1e10 build/test_stress
+ *                        (~130 ns a call: about 22 minutes; 1e9 measured:
+ *                        see the README's robustness section).
  *   MIST_STRESS_SEED=S   the seed of the random draws (default fixed).
  *   MIST_STRESS_PRINT=N  print the first N failures (default 25).
  *   MIST_STRESS_ONLY=L   run only the families in the list L (any of dens,
- *                        samp, mix, dir, hfog; for debugging: the call
+ *                        samp, mix, dir, hfog, prep; for debugging: the call
  *                        count check is then off).
+ *   MIST_STRESS_DUMP=D   write each random height fog case (mist_hfog_*,
+ *                        layers, mist_segment_linear) that fails a check
+ *                        to the directory D as a direct record of
+ *                        fuzz/fuzz_hfog.c (files stress-<n>, at most 200):
+ *                        replay_hfog D reruns them, and they go to the kept
+ *                        corpus fuzz/corpus/hfog/ once fixed.
  *
  * Under -ffast-math (no NaN, no infinity, subnormals flushed to zero) the
  * generators give finite normal input only and the tolerances widen
@@ -47,6 +59,31 @@ static const char *st_only;                /* MIST_STRESS_ONLY */
 static int st_want(const char *fam) { return !st_only || strstr(st_only, fam) != NULL; }
 static mi_rng st_rng;
 static mi_src st_src;
+
+/* MIST_STRESS_DUMP: the failing height fog cases as fuzz_hfog records */
+static const char *st_dump_dir;
+static int st_dumped;
+static unsigned char st_rec[4096];
+static size_t st_nrec;
+static void st_put(const void *p, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; ++i, ++st_nrec)
+        if (st_nrec < sizeof st_rec) st_rec[st_nrec] = ((const unsigned char *)p)[i];
+}
+/* writes st_rec when checks failed since `fails0` */
+static void st_dump(unsigned long long fails0)
+{
+    char path[1024];
+    FILE *fh;
+    if (!st_dump_dir || mi_fails == fails0 || st_dumped >= 200 || st_nrec > sizeof st_rec) return;
+    snprintf(path, sizeof path, "%s/stress-%03d", st_dump_dir, st_dumped++);
+    fh = fopen(path, "wb");
+    if (!fh) { printf("MIST_STRESS_DUMP: cannot write %s\n", path); return; }
+    fwrite(st_rec, 1, st_nrec, fh);
+    fclose(fh);
+    printf("  (the case above: %s)\n", path);
+}
 
 /* ------------------------------------------------------------------------ */
 /* Sections: each checks that none of its checks failed, and reports its    */
@@ -77,8 +114,20 @@ static void st_end(const char *name)
 /* calls for a share of the budget (the share of all sections sum to 1) */
 static unsigned long long st_share(double share) { return (unsigned long long)(st_target * share); }
 
-/* the random part of a section: until its share of calls is made */
-#define ST_UNTIL(share) for (st_stop = mi_calls + st_share(share); mi_calls < st_stop;)
+/* A dense grid's sizes are capped (its arrays), so at a large budget it
+ * makes fewer calls than its share: st_owe notes the rest, which the next
+ * random part makes (the budget is met at any MIST_STRESS_CALLS). */
+static unsigned long long st_deficit;
+static void st_owe(double share)
+{
+    unsigned long long want = st_share(share), made = mi_calls - st_calls0;
+    if (made < want) st_deficit += want - made;
+}
+
+/* the random part of a section: until its share of calls (and what the
+ * grids before it owe) is made */
+#define ST_UNTIL(share) \
+    for (st_stop = mi_calls + st_share(share) + st_deficit, st_deficit = 0; mi_calls < st_stop;)
 static unsigned long long st_stop;
 
 /* the double pass, then the float pass */
@@ -145,6 +194,8 @@ int main(void)
     if (st_only && !*st_only) st_only = NULL;
     e = getenv("MIST_STRESS_PRINT");
     if (e && *e) mi_print_max = strtoull(e, NULL, 0);
+    st_dump_dir = getenv("MIST_STRESS_DUMP");
+    if (st_dump_dir && !*st_dump_dir) st_dump_dir = NULL;
     e = getenv("MIST_STRESS_SEED");
     st_rng.s = e && *e ? strtoull(e, NULL, 0) : 0x5EED0F0651ULL;
     st_src.rng = &st_rng;
@@ -284,6 +335,7 @@ static void ST_F(st_evals)(double share)
         }
     }
     for (k = 0; k < nU; ++k) ST_F(mi_rayleigh_eval)(U[k]);
+    st_owe(share / 3);
     st_end(ST_NAME " densities: dense grid");
     /* random draws */
     st_begin();
@@ -340,6 +392,7 @@ static void ST_F(st_samples)(double s_hg, double s_dr, double s_ray)
     nX = ST_F(st_grid)(MI_XI, n, X, (int)(sizeof X / sizeof *X));
     for (i = 0; i < nG; ++i) ST_SWEEP("mist_hg_sample", ST_F(mi_hg_sample)(G[i], X[k]), G[i], 0);
     ST_SWEEP("mist_rayleigh_sample", ST_F(mi_rayleigh_sample)(X[k]), 0, 0);
+    st_owe(s_hg / 2);
     st_end(ST_NAME " mist_hg_sample: monotone sweeps");
     st_begin();
     nA = 0;
@@ -363,6 +416,7 @@ static void ST_F(st_samples)(double s_hg, double s_dr, double s_ray)
     for (i = 0; i < ng; ++i)
         for (j = 0; j < nA; ++j)
             ST_SWEEP("mist_draine_sample", ST_F(mi_draine_sample)(gs[i], A[j], X[k]), gs[i], A[j]);
+    st_owe(s_dr / 2);
     st_end(ST_NAME " mist_draine_sample: monotone sweeps");
     /* random draws, each with a nearby xi: monotone in pairs */
     st_begin();
@@ -438,6 +492,7 @@ static void ST_F(st_fog)(double share)
         ST_F(mi_fog_eval)(f, 1);
         ST_F(mi_fog_sample)(f, D[(i * 7919) % n] / 50);
     }
+    st_owe(share / 4);
     st_end(ST_NAME " mist_fog_from_diameter: dense grid");
     st_begin();
     ST_UNTIL(share * 3 / 4) {
@@ -497,17 +552,100 @@ static void ST_F(st_dirs)(double s_dir, double s_sdir)
 }
 
 /* ------------------------------------------------------------------------ */
+/* Prepared phase functions and batch forms                                 */
+/* ------------------------------------------------------------------------ */
+
+static void ST_F(st_prepared)(double s_prep, double s_batch)
+{
+    static ST_T gs[160], as[160], us[160], xs[160];
+    int ng = ST_F(mi_specials)(MI_G, gs), na = ST_F(mi_specials)(MI_ALPHA, as);
+    int nu = ST_F(mi_specials)(MI_U, us), nx = ST_F(mi_specials)(MI_XI, xs), i, j, k;
+    ST_V3 wi;
+    ST_FOG f;
+    wi.x = 0; wi.y = (ST_T)0.6; wi.z = (ST_T)0.8;
+    /* edge grid: every kind at every edge g (Draine: with every edge alpha,
+     * a prepared Draine costs ~33 samples), each at every edge u and xi */
+    st_begin();
+    f = ST_F(mi_fog_make)((ST_T)0.9, (ST_T)0.5, 250, (ST_T)0.3);
+    for (k = 3; k < 6; ++k) ST_F(mi_phase)(k, 0, 0, f, us, xs, nu < nx ? nu : nx, wi, (ST_T)0.3);
+    for (i = 0; i < ng; ++i) {
+        ST_F(mi_phase)(0, gs[i], 0, f, us, xs, nu < nx ? nu : nx, wi, (ST_T)0.3);
+        ST_F(mi_phase)(2, gs[i], 0, f, us, xs, nu < nx ? nu : nx, wi, (ST_T)0.7);
+        for (j = 0; j < na; j += 3)
+            ST_F(mi_phase)(1, gs[i], as[(j + i) % na], f, us, xs, 8, wi, (ST_T)0.1);
+        f.g_hg = gs[i]; f.g_d = gs[(i * 7 + 3) % ng]; f.alpha = as[i % na];
+        f.w_d = (ST_T)((i % 5) / 4.0);
+        ST_F(mi_phase)(4, 0, 0, f, us + i % 8, xs + i % 8, 8, wi, (ST_T)0.9);
+    }
+    for (i = 0; i < ng; ++i)
+        for (j = 0; j < na; ++j) ST_F(mi_batch)(gs[i], as[j], us, nu < 80 ? nu : 80);
+    st_end(ST_NAME " mist_phase_*, mist_*_n: edge grid");
+    /* random: a prepared phase function of a random kind and parameters,
+     * 16 draws of u and xi with it */
+    st_begin();
+    ST_UNTIL(s_prep) {
+        ST_T u[16], x[16], g = ST_F(mi_draw)(&st_src, MI_G), a = ST_F(mi_draw)(&st_src, MI_ALPHA);
+        int kind = (int)(mi_src_next(&st_src) % 6);
+        for (k = 0; k < 16; ++k) {
+            u[k] = ST_F(mi_draw)(&st_src, MI_U);
+            x[k] = ST_F(mi_draw)(&st_src, MI_XI);
+        }
+        f = ST_F(st_draw_fog)();
+        ST_F(mi_phase)(kind, g, a, f, u, x, 16, ST_F(mi_draw_dir)(&st_src),
+                       ST_F(mi_draw)(&st_src, MI_XI));
+    }
+    st_end(ST_NAME " mist_phase_*: random");
+    /* random: batches of 1 to 80 elements (the blocks are 32), drawn as u
+     * and as xi */
+    st_begin();
+    ST_UNTIL(s_batch) {
+        ST_T in[80], g = ST_F(mi_draw)(&st_src, MI_G), a = ST_F(mi_draw)(&st_src, MI_ALPHA);
+        uint64_t m = mi_src_next(&st_src);
+        int n = (int)(m % 80) + 1;
+        for (k = 0; k < n; ++k) in[k] = ST_F(mi_draw)(&st_src, (m >> 8) & 1 ? MI_U : MI_XI);
+        ST_F(mi_batch)(g, a, in, n);
+    }
+    st_end(ST_NAME " mist_*_n: random");
+}
+
+/* ------------------------------------------------------------------------ */
 /* Height fog                                                               */
 /* ------------------------------------------------------------------------ */
+
+/* The fields of a fuzz_hfog direct record (fuzz/fuzz_hfog.c): every field
+ * of the fog in struct order (sun_extinction: one byte), the ray, the
+ * background and w. */
+static void ST_F(st_rec_fog)(const ST_HFOG *f, ST_V3 o, ST_V3 d, ST_T len, ST_RGB bg, ST_T w)
+{
+    unsigned char se = f->sun_extinction != 0;
+    st_put(&f->base, sizeof(ST_T)); st_put(&f->density, sizeof(ST_T));
+    st_put(&f->scale_height, sizeof(ST_T));
+    st_put(&f->rayleigh_scat, sizeof f->rayleigh_scat); st_put(&f->rayleigh_ext, sizeof f->rayleigh_ext);
+    st_put(&f->mie_scat, sizeof f->mie_scat); st_put(&f->mie_ext, sizeof f->mie_ext);
+    st_put(&f->mie_phase.g_hg, sizeof(ST_T)); st_put(&f->mie_phase.g_d, sizeof(ST_T));
+    st_put(&f->mie_phase.alpha, sizeof(ST_T)); st_put(&f->mie_phase.w_d, sizeof(ST_T));
+    st_put(&f->sun_dir.x, sizeof(ST_T)); st_put(&f->sun_dir.y, sizeof(ST_T));
+    st_put(&f->sun_dir.z, sizeof(ST_T));
+    st_put(&f->sun, sizeof f->sun); st_put(&f->ambient, sizeof f->ambient);
+    st_put(&se, 1);
+    st_put(&o.x, sizeof(ST_T)); st_put(&o.y, sizeof(ST_T)); st_put(&o.z, sizeof(ST_T));
+    st_put(&d.x, sizeof(ST_T)); st_put(&d.y, sizeof(ST_T)); st_put(&d.z, sizeof(ST_T));
+    st_put(&len, sizeof(ST_T));
+    st_put(&bg.r, sizeof(ST_T)); st_put(&bg.g, sizeof(ST_T)); st_put(&bg.b, sizeof(ST_T));
+    st_put(&w, sizeof(ST_T));
+}
 
 static void ST_F(st_hfog)(double share)
 {
 #if !MI_FAST
+    /* (subnormal vertical cosines and scale heights of either type, and
+     * FLT_MAX, DBL_MAX: issue 6's edge cases (d) and (a); DBL_MAX is +inf,
+     * a uniform fog, in float) */
     static const double ws[] = { 0, 1e-300, -1e-300, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3,
-                                 0.5, -0.5, 1, -1 };
+                                 0.5, -0.5, 1, -1, 1e-320, -1e-320, 1e-45, -1e-45 };
     static const double hs[] = { -1000, -800, -700, -90, -80, -1, 0, 1, 80, 90, 700, 800, 1000 };
     static const double ls[] = { 0, 1e-300, 1e-3, 1, 1e3, 1e6, 1e12, 1e300, -1 };
-    static const double Hs[] = { 1e-30, 1e-3, 1, 1e3, 1e30 };
+    static const double Hs[] = { 1e-30, 1e-3, 1, 1e3, 1e30, 1e-40, 1e-310, FLT_MAX, DBL_MAX };
 #else   /* -ffast-math: where nothing overflows or underflows */
     static const double ws[] = { 0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3, 0.5, -0.5, 1, -1 };
     static const double hs[] = { -70, -40, -1, 0, 1, 40, 70 };
@@ -577,16 +715,26 @@ static void ST_F(st_hfog)(double share)
     st_end(ST_NAME " height fog: grid");
     st_begin();
     ST_UNTIL(share * 0.6) {
+        unsigned long long f0 = mi_fails;
+        ST_T w;
         ST_F(mi_gen_hfog)(&st_src, &f, &o, &d, &len, &bg);
         ST_F(mi_hfog_eval)(&f, o, d, len, bg);
-        ST_F(mi_hfog_column)(&f, o.y, ST_F(mi_draw)(&st_src, MI_U), len);
+        w = ST_F(mi_draw)(&st_src, MI_U);
+        ST_F(mi_hfog_column)(&f, o.y, w, len);
         if ((st_rng.s & 15) == 0) ST_F(mi_hfog_null)(o, d, len, bg);
+        if (st_dump_dir && mi_fails != f0) {
+            unsigned char sel = (unsigned char)(2 | (sizeof(ST_T) == 4));
+            st_nrec = 0;
+            st_put(&sel, 1);
+            ST_F(st_rec_fog)(&f, o, d, len, bg, w);
+            st_dump(f0);
+        }
     }
     st_end(ST_NAME " height fog: random");
     /* several layers: random stacks (n from -1 to 9, or NULL), and one fog
      * split into its Rayleigh and Mie layers (the exact case) */
     st_begin();
-    ST_UNTIL(share * 0.1) {                  /* ~6 us a call: fewer */
+    ST_UNTIL(share * 0.04) {                 /* ~7 us a call: fewer */
         static ST_HFOG ls[10];
         static const int pieces[] = { -1, 0, 1, 2, 8, 64, 100 };
         uint64_t m = mi_src_next(&st_src);
@@ -604,13 +752,25 @@ static void ST_F(st_hfog)(double share)
                 ls[k].base = ls[0].base;
                 ls[k].scale_height = (ST_T)(ls[0].scale_height * (1 + 0.5 * k));
             }
+        unsigned long long f0 = mi_fails;
         ST_F(mi_hfog_layers)((m >> 20) % 16 ? ls : (ST_HFOG *)0, n, o, d, len, p);
         ST_F(mi_hfog_split)(&ls[0], o, d, len, p);
+        if (st_dump_dir && mi_fails != f0) {
+            /* selector, n + 1, pieces + 2 (100 is 64: both the most), layers */
+            unsigned char hd[3];
+            hd[0] = (unsigned char)((1 << 2) | 2 | (sizeof(ST_T) == 4));
+            hd[1] = (unsigned char)(n + 1);
+            hd[2] = (unsigned char)((p > 64 ? 64 : p) + 2);
+            st_nrec = 0;
+            st_put(hd, 3);
+            for (k = 0; k < (n > 0 ? n : 1); ++k) ST_F(st_rec_fog)(&ls[k], o, d, len, bg, 0);
+            st_dump(f0);
+        }
     }
     st_end(ST_NAME " mist_hfog_layers_eval");
     /* ray-marching steps */
     st_begin();
-    ST_UNTIL(share * 0.3) {
+    ST_UNTIL(share * 0.36) {
         ST_T k0 = ST_F(mi_draw)(&st_src, MI_POS), k1 = ST_F(mi_draw)(&st_src, MI_POS);
         ST_T s0 = ST_F(mi_draw)(&st_src, MI_REAL), s1 = ST_F(mi_draw)(&st_src, MI_REAL);
         ST_T sl = ST_F(mi_draw)(&st_src, MI_POS);
@@ -618,7 +778,16 @@ static void ST_F(st_hfog)(double share)
         if (m % 4 == 0) k1 = k0;                          /* constant extinction */
         if (m % 16 == 1) k0 = k1 = 0;                     /* none */
         if (m % 16 == 2 && !MI_FAST) sl = ST_INF;         /* unbounded */
+        m = mi_fails;
         ST_F(mi_segment)(k0, k1, s0, s1, sl);
+        if (st_dump_dir && mi_fails != m) {
+            unsigned char sel = (unsigned char)((2 << 2) | 2 | (sizeof(ST_T) == 4));
+            st_nrec = 0;
+            st_put(&sel, 1);
+            st_put(&k0, sizeof k0); st_put(&k1, sizeof k1); st_put(&s0, sizeof s0);
+            st_put(&s1, sizeof s1); st_put(&sl, sizeof sl);
+            st_dump(m);
+        }
     }
     st_end(ST_NAME " mist_segment_linear");
 }
@@ -628,11 +797,12 @@ static void ST_F(st_hfog)(double share)
 static void ST_F(run)(void)
 {
     printf("%s:\n", ST_NAME);
-    if (st_want("dens")) ST_F(st_evals)(0.5 * 0.44);
+    if (st_want("dens")) ST_F(st_evals)(0.5 * 0.39);
     if (st_want("samp")) ST_F(st_samples)(0.5 * 0.12, 0.5 * 0.12, 0.5 * 0.04);
     if (st_want("mix")) ST_F(st_fog)(0.5 * 0.08);
     if (st_want("dir")) ST_F(st_dirs)(0.5 * 0.08, 0.5 * 0.07);
     if (st_want("hfog")) ST_F(st_hfog)(0.5 * 0.05);
+    if (st_want("prep")) ST_F(st_prepared)(0.5 * 0.03, 0.5 * 0.02);
 }
 
 #endif /* ST_TEMPLATE */

@@ -36,6 +36,79 @@ MIST_FUNC double use_all(double x)
     wof = mist_rayleigh_sample_dirf(wif, xf, xf, &pdff); sf += wof.x + pdff;
     wof = mist_fog_sample_dirf(fogf, wif, xf, xf, &pdff); sf += wof.x + pdff;
     wof = mist_dir_from_cosf(mist_normalizef(wif), xf, xf); sf += wof.x;
+    {   /* the prepared phase functions */
+        mist_phase ph[5];
+        mist_phasef phf[5];
+        int k;
+        ph[0] = mist_phase_hg(0.5); ph[1] = mist_phase_draine(0.5, 2.0);
+        ph[2] = mist_phase_cs(0.5); ph[3] = mist_phase_rayleigh(); ph[4] = mist_phase_fog(fog);
+        phf[0] = mist_phase_hgf(0.5f); phf[1] = mist_phase_drainef(0.5f, 2.0f);
+        phf[2] = mist_phase_csf(0.5f); phf[3] = mist_phase_rayleighf();
+        phf[4] = mist_phase_fogf(fogf);
+        for (k = 0; k < 5; ++k) {
+            s += mist_phase_eval(&ph[k], x) + mist_phase_sample(&ph[k], x);
+            wo = mist_phase_sample_dir(&ph[k], wi, x, x, &pdf); s += wo.x + pdf;
+            sf += mist_phase_evalf(&phf[k], xf) + mist_phase_samplef(&phf[k], xf);
+            wof = mist_phase_sample_dirf(&phf[k], wif, xf, xf, &pdff); sf += wof.x + pdff;
+        }
+    }
+    {   /* the batch forms, in place */
+        double a[3];
+        float af[3];
+        a[0] = a[1] = a[2] = x;
+        af[0] = af[1] = af[2] = xf;
+        mist_hg_eval_n(0.5, a, a, 3);              mist_hg_eval_nf(0.5f, af, af, 3);
+        mist_hg_sample_n(0.5, a, a, 3);            mist_hg_sample_nf(0.5f, af, af, 3);
+        mist_draine_eval_n(0.5, 2.0, a, a, 3);     mist_draine_eval_nf(0.5f, 2.0f, af, af, 3);
+        mist_draine_sample_n(0.5, 2.0, a, a, 3);   mist_draine_sample_nf(0.5f, 2.0f, af, af, 3);
+        mist_rayleigh_eval_n(a, a, 3);             mist_rayleigh_eval_nf(af, af, 3);
+        mist_rayleigh_sample_n(a, a, 3);           mist_rayleigh_sample_nf(af, af, 3);
+        s += a[1];
+        sf += af[1];
+    }
+    {   /* the analytic height fog */
+        mist_hfog hf[2];
+        mist_hfogf hff[2];
+        mist_vec3 o;
+        mist_vec3f of;
+        mist_rgb t, l, b;
+        mist_rgbf tf, lf, bf;
+        double tr = 0;
+        float trf = 0;
+        int k;
+        o.x = 0; o.y = x; o.z = 0;
+        of.x = 0; of.y = xf; of.z = 0;
+        for (k = 0; k < 2; ++k) {
+            hf[k].base = 0; hf[k].density = 1; hf[k].scale_height = 1000.0 * (k + 1);
+            hf[k].rayleigh_scat.r = hf[k].rayleigh_scat.g = hf[k].rayleigh_scat.b = 1e-5;
+            hf[k].rayleigh_ext = hf[k].rayleigh_scat;
+            hf[k].mie_scat = hf[k].rayleigh_scat; hf[k].mie_ext = hf[k].rayleigh_scat;
+            hf[k].mie_phase = fog; hf[k].sun_dir = wi;
+            hf[k].sun.r = hf[k].sun.g = hf[k].sun.b = 1;
+            hf[k].ambient = hf[k].sun; hf[k].sun_extinction = k;
+            hff[k].base = 0; hff[k].density = 1; hff[k].scale_height = 1000.0f * (float)(k + 1);
+            hff[k].rayleigh_scat.r = hff[k].rayleigh_scat.g = hff[k].rayleigh_scat.b = 1e-5f;
+            hff[k].rayleigh_ext = hff[k].rayleigh_scat;
+            hff[k].mie_scat = hff[k].rayleigh_scat; hff[k].mie_ext = hff[k].rayleigh_scat;
+            hff[k].mie_phase = fogf; hff[k].sun_dir = wif;
+            hff[k].sun.r = hff[k].sun.g = hff[k].sun.b = 1;
+            hff[k].ambient = hff[k].sun; hff[k].sun_extinction = k;
+        }
+        s += mist_hfog_column(&hf[0], x, 0.5, 100.0);
+        mist_hfog_eval(&hf[0], o, wi, 100.0, &t, &l); s += t.r + l.g;
+        s += mist_hfog_transmittance(&hf[0], o, wi, 100.0).b;
+        s += mist_hfog_inscatter(&hf[0], o, wi, 100.0).r;
+        s += mist_hfog_apply(&hf[0], o, wi, 100.0, t).g;
+        mist_hfog_layers_eval(hf, 2, o, wi, 100.0, 4, &t, &l, &b); s += t.r + l.r + b.r;
+        s += mist_segment_linear(0.1, 0.2, 1.0, 2.0, x, &tr) + tr;
+        sf += mist_hfog_columnf(&hff[0], xf, 0.5f, 100.0f);
+        mist_hfog_evalf(&hff[0], of, wif, 100.0f, &tf, &lf); sf += tf.r + lf.g;
+        sf += mist_hfog_transmittancef(&hff[0], of, wif, 100.0f).b;
+        sf += mist_hfog_inscatterf(&hff[0], of, wif, 100.0f).r;
+        sf += mist_hfog_applyf(&hff[0], of, wif, 100.0f, tf).g;
+        mist_hfog_layers_evalf(hff, 2, of, wif, 100.0f, 4, &tf, &lf, &bf); sf += tf.r + lf.r + bf.r;
+        sf += mist_segment_linearf(0.1f, 0.2f, 1.0f, 2.0f, xf, &trf) + trf;
+    }
     return s + sf;
 }
 #endif
