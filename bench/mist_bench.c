@@ -101,6 +101,7 @@ static double b_draine_sample(void)    LOOP(double, mist_draine_sample(0.5, 17.,
 static double b_eq6f_250(void)         LOOP(float, draine_eq6f(0.1f, 250.f, xf[i]))
 static double b_draine_samplef_250(void) LOOP(float, mist_draine_samplef(0.1f, 250.f, xf[i]))
 static double b_cs_samplef(void)       LOOP(float, mist_cs_samplef(0.7f, xf[i]))
+static double b_eq6f_cs(void)          LOOP(float, draine_eq6f(0.7f, 1.f, xf[i]))
 static double b_rayleigh_samplef(void) LOOP(float, mist_rayleigh_samplef(xf[i]))
 static double b_rayleigh_sample(void)  LOOP(double, mist_rayleigh_sample(xd[i]))
 static double b_fog_samplef(void)
@@ -143,6 +144,9 @@ static double b_phase_hg_samplef(void) LOOP(float, mist_phase_samplef(&ph_hgf, x
 static double b_phase_draine_evalf(void) LOOP(float, mist_phase_evalf(&ph_drf, uf[i]))
 static double b_phase_draine_samplef(void) LOOP(float, mist_phase_samplef(&ph_drf, xf[i]))
 static double b_phase_draine_sample(void) LOOP(double, mist_phase_sample(&ph_dr, xd[i]))
+static mist_phasef ph_dr250f, ph_csf;
+static double b_phase_dr250_samplef(void) LOOP(float, mist_phase_samplef(&ph_dr250f, xf[i]))
+static double b_phase_cs_samplef(void) LOOP(float, mist_phase_samplef(&ph_csf, xf[i]))
 static double b_phase_fog_evalf(void)  LOOP(float, mist_phase_evalf(&ph_fogf, uf[i]))
 static double b_phase_fog_samplef(void) LOOP(float, mist_phase_samplef(&ph_fogf, xf[i]))
 
@@ -314,6 +318,14 @@ static void prepared_rows(void)
     row("mist_phase_sample (Draine .5, 17)", b_phase_draine_sample, "mist_draine_sample", base);
     base = measure(b_eq6f, &lo, &hi);
     row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "eq. 6 float", base);
+    ph_dr250f = mist_phase_drainef(0.1f, 250.f);
+    ph_csf = mist_phase_csf(0.7f);
+    base = measure(b_eq6f_250, &lo, &hi);
+    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, 0);
+    row("mist_phase_samplef (Draine .1, 250)", b_phase_dr250_samplef, "eq. 6 float", base);
+    base = measure(b_eq6f_cs, &lo, &hi);
+    row("eq. 6 float (g .7, a 1)", b_eq6f_cs, NULL, 0);
+    row("mist_phase_samplef (CS .7)", b_phase_cs_samplef, "eq. 6 float", base);
     base = measure(b_fog_evalf_rt, &lo, &hi);
     row("mist_phase_evalf (fog, 10 um)", b_phase_fog_evalf, "mist_fog_evalf", base);
     base = measure(b_fog_samplef_rt, &lo, &hi);

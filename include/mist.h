@@ -93,7 +93,10 @@
  *   mist_hg_eval_n(g, const u[], out[], n)   and every other model's
  *   _eval_n and _sample_n (float: the same name + 'f', mist_hg_eval_nf):
  *   out[i] is exactly what the scalar function returns for in[i] (same
- *   domain, same bad-input results).  out may equal in (in place); other
+ *   domain, same bad-input results; bit for bit, except that a compiler
+ *   allowed to contract a*b+c into one fma, e.g. gcc -march=native without
+ *   -std=c99 (-ffp-contract=fast), may fuse differently in the two copies:
+ *   then within a few ulps, 1-2 measured).  out may equal in (in place); other
  *   overlaps are not allowed.  n = 0 does nothing (in, out may be NULL).
  *   They work on blocks of 32 with branch-free bodies, so that gcc and
  *   clang vectorise them at -O2 and -O3.  Bodies with a square root (the
@@ -116,13 +119,20 @@
  *   __FAST_MATH__, __FINITE_MATH_ONLY__, __ASSOCIATIVE_MATH__,
  *   __RECIPROCAL_MATH__), mist compiles its own functions with precise
  *   floating point and gives the includer's flags back after them:
- *   gcc    #pragma GCC optimize("no-fast-math"): the documented results
- *          hold; the whole numeric test suite passes under -O2 -ffast-math
- *          (variant_fastmath, tests/robustness.cmake).  The cost: gcc does
+ *   gcc    #pragma GCC optimize("no-fast-math", ..., "fp-contract=off"):
+ *          the documented results hold; the whole test suite passes under
+ *          -O2 -ffast-math (variant_fastmath, tests/robustness.cmake).
+ *          With -march=native added, one bit-for-bit comparison of two
+ *          calls in tests/test_domain.c failed (mist_fog_eval at w_d > 1
+ *          against mist_draine_eval: gcc's constant-propagated copy of a
+ *          function; it comes and goes with the shape of the calling code,
+ *          cause not pinned down).  The cost: gcc does
  *          not inline a function with other floating-point flags into a
- *          fast-math caller, so every mist call stays a call: 1x to 2.4x
+ *          fast-math caller, so every mist call stays a call: 1x to 3.5x
  *          the time per call of a plain -O2 build (bench/mist_bench.c:
- *          mist_hg_evalf 0.9x, mist_hg_sample 1.8x, mist_fog_evalf 2.4x).
+ *          the cheap ones most, mist_hg_samplef 3.5x, mist_fog_evalf 2.8x,
+ *          mist_hg_evalf 2.2x; the iterative samplers 1.0x to 1.1x); the
+ *          batch forms vectorise and take 0.3x to 1.1x.
  *   clang  #pragma float_control(precise, on): inlined, no slower than
  *          -O2.  One gap (clang 14): calls of libm functions keep their
  *          fast-math flags, so a float square root may come from the
@@ -131,16 +141,21 @@
  *          can differ in the last bits, two inlined copies of one call
  *          from each other.  Everything else holds (the numeric tests pass
  *          but tests/test_domain.c's bit-for-bit comparisons of two float
- *          direction samples).
+ *          direction samples).  Contraction inside mist is clang's default
+ *          (-ffp-contract=on).  clang defines no macro for -fassociative-
+ *          math or -freciprocal-math alone: only -ffast-math and
+ *          -ffinite-math-only are seen, and guarded.
  *   Either way -ffast-math also links start-up code that flushes subnormal
  *   results to zero and reads subnormal inputs as zero (FTZ/DAZ), for the
  *   whole program: a result that would be subnormal is 0 (an absolute
- *   error below the type's smallest normal number).  No pragma can change
- *   that; nothing else changes with it.
+ *   error below the type's smallest normal number), and a result computed
+ *   through subnormal intermediates can lose accuracy (the stress test
+ *   keeps to normal-range input under -ffast-math for that reason).  No
+ *   pragma can change that.
  *   Not guarded: other compilers, and nvcc (its --use_fast_math acts on
  *   device code, where it approximates division, sqrt and exp).
  *   MIST_ALLOW_FAST_MATH turns the guard off: gcc then inlines again (up to
- *   2.4x faster under -ffast-math) but NaN and infinite input, |g| near 1
+ *   3x faster under -ffast-math) but NaN and infinite input, |g| near 1
  *   and extreme magnitudes are no longer handled as documented.
  *
  * REFERENCES (section by section below)
@@ -173,7 +188,9 @@
 /* The fast-math guard (see FAST MATH above), popped at the end of the file.
  * gcc: errno and trapping stay off as -ffast-math has them (the batch
  * forms vectorise); signed zeros, NaN, infinity and the written order of
- * operations are honoured again.  gcc 12's pop_options leaves the
+ * operations are honoured again; no contraction into FMA (-std=c99's
+ * setting, which the pragma would otherwise reset to gcc's GNU default,
+ * "fast", measured).  gcc 12's pop_options leaves the
  * predefined macros of these flags as the pragma set them (__FAST_MATH__
  * undefined, ...), so the includer's are noted here and put back there. */
 #if !defined(MIST_ALLOW_FAST_MATH) && !defined(__NVCC__) && (defined(__FAST_MATH__) \
@@ -206,7 +223,8 @@
 #      define MIST__HAD_NO_MATH_ERRNO
 #    endif
 #    pragma GCC push_options
-#    pragma GCC optimize("no-fast-math", "no-math-errno", "no-trapping-math")
+#    pragma GCC optimize("no-fast-math", "no-math-errno", "no-trapping-math", \
+                         "fp-contract=off")
 #  endif
 #endif
 
@@ -255,7 +273,7 @@ typedef struct mist_fogf { float  g_hg, g_d, alpha, w_d; } mist_fogf;
  * parameters, computed once by mist_phase_hg / _draine / _cs / _rayleigh /
  * _fog, for mist_phase_eval / _sample / _sample_dir.  See "Prepared phase
  * functions".  The fields are internal: build it with those functions. */
-#define MIST__PHASE_K 32        /* intervals of the prepared sampler's start table */
+#define MIST__PHASE_K 128       /* intervals of the prepared sampler's start table */
 typedef struct mist_phase {
     int    kind;                /* 0, 2: (1 - w) HG(g_hg) + w Draine(g, alpha), in one
                                    lobe (0) or two (2); 1: Rayleigh */
@@ -785,7 +803,8 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* alpha <= 1e4, up to 5x (4.8x measured) for alpha > 1e4, |g| <= 1e-3 and  */
 /* xi within a few ulps of F(0), where F is flat to third order.            */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
-/* instead of eq. 6 (see "Prepared phase functions").                       */
+/* instead of eq. 6, and in float usually ends after one straight-line      */
+/* Newton step (mist__draine_step; see "Prepared phase functions").         */
 /* ======================================================================== */
 
 /* F_g(0) = (1-g)(c0 d0 + c1 (P0 + 3a) a) / (V0 cn (V1 + V0) d0),
@@ -1025,13 +1044,25 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
         st = tab[j] + t * (m0 + t * ((MIST__C(3) * d - MIST__C(2) * m0 - m1)
                                      + t * (m0 + m1 - MIST__C(2) * d)));
 #ifdef MIST__W
-        if (MIST__EPS > 1e-10) {    /* float: one wide Newton step, no branch on xi */
-            int ok;                 /* (weights (1, alpha): exact in the wide type) */
-            MIST__W uw = MIST__WFN(mist__draine_step)((MIST__W)g,
-                (MIST__W)(alpha <= MIST__C(FLT_MAX) ? 1 : 0),
-                (MIST__W)(alpha <= MIST__C(FLT_MAX) ? alpha : 1), (MIST__W)xi, (MIST__W)st,
-                (MIST__W)tab[2 * MIST__PHASE_K + 2 + j], (MIST__W)MIST__EPS / 64, &ok);
-            if (ok) return uw < -1 ? MIST__C(-1) : (uw > 1 ? MIST__C(1) : (MIST__T)uw);
+        {   /* wide Newton steps with an a-priori stop, no branch on xi (see
+             * mist__draine_step); a second only from inside [u_j, u_j+1], kb's
+             * range.  Double: first one step in T (long double is slow). */
+            int ok, k;
+            MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut;
+            MIST__W uw = st;                    /* weights (1, alpha): exact */
+            kb = tab[2 * MIST__PHASE_K + 2 + j];
+            if (MIST__EPS < 1e-10) {
+                ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, st, kb,
+                                                 MIST__C(0), &ok);
+                if (ut >= tab[j] && ut <= tab[j + 1]) uw = ut;
+            }
+            for (k = 0; k < 2; ++k) {
+                uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
+                    ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
+                    (MIST__W)MIST__EPS / 64, &ok);
+                if (ok) return uw < -1 ? MIST__C(-1) : (uw > 1 ? MIST__C(1) : (MIST__T)uw);
+                if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
+            }
         }
 #endif
     }
@@ -1133,13 +1164,18 @@ MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 /* precision), the fog's mixture weight, the density as one lobe            */
 /* (a1 + b1 u^2) / V^3 where HG and Draine share g (two lobes only for a    */
 /* fog with g_hg != g_d), and a start table for the Draine sampler: the     */
-/* exact u at xi = j/32 (j = 0..32) with its slopes du/dxi, interpolated by */
-/* monotone cubic Hermite (slopes limited to 3x the neighbouring secants).  */
-/* The start only saves iterations (eq. 6 costs more than the wide Newton   */
-/* steps it saves): the same safeguarded Newton iteration and stop as the   */
-/* unprepared sampler finish it, so the result meets the same bar (tested   */
-/* in tests/test_accuracy.c).  Preparing Draine costs 33 exact samples (a   */
-/* few microseconds); the struct is ~0.6 KB (double), ~0.3 KB (float).      */
+/* exact u at xi = j/128 (j = 0..128) with its slopes du/dxi, interpolated  */
+/* by monotone cubic Hermite (slopes limited to 3x the neighbouring         */
+/* secants), and per interval the bound kb of mist__draine_step.  In float  */
+/* the start is finished by at most two straight-line Newton steps in       */
+/* double with an a-priori stop (error <= kb s^2 <= eps/64 of the bar's     */
+/* scale); the first step alone lands for 95-100% of xi (measured at g      */
+/* .5/.1/.7/.9, alpha 17/250/1/1).  The rest, and double always, go on with */
+/* the same safeguarded Newton iteration and stop as the unprepared         */
+/* sampler, so the result meets the same bar (tested in                     */
+/* tests/test_accuracy.c, which fails with an unsound stop, kb = 0).        */
+/* Preparing Draine costs 129 exact samples; the struct is ~3.1 KB          */
+/* (double), ~1.6 KB (float).                                               */
 /* Results equal the unprepared functions' to a few ulps (the density's     */
 /* rounding order differs, and the sampler's stop may land one ulp apart).  */
 /* HG, Draine, Cornette-Shanks and the fog are one mixture                  */
@@ -2110,8 +2146,9 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
             pM = MIST__FN(mist_fog_eval)(fog->mie_phase, u);
             ly = l.y;
             if (ly > MIST__C(0)) {              /* nu = 1 - w / ly, exact near 0 */
-                nu = (ly - w) / ly;
-                anu = nu < MIST__C(0) ? -nu : nu;
+                nu = (ly - w) / ly;             /* (its sign) */
+                anu = ly - w;                   /* |nu| ly: |nu| overflows for a */
+                anu = anu < MIST__C(0) ? -anu : anu;    /* subnormal ly */
             }
         }
         for (c = 0; c < 3; ++c) {
@@ -2152,7 +2189,9 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
                  * A0, A1 the sun's optical depth to the start and (plus tau)
                  * to the end (e^-A enters expmul as its exponent).  See the
                  * section comment.  A sun at or below the horizon: none. */
-                MIST__T a, z = tau * anu;
+                /* z = tau |nu| = st col |ly - w| / ly, scaled (found by the
+                 * stress test: ly = 2^-149 overflowed |nu|, tau*inf) */
+                MIST__T a, z = MIST__FN(mist__hmul)(st[c], anu, MIST__C(1), ly, ray.cm, ce, MIST__C(0));
                 a = MIST__FN(mist__hsun)(st[c], H, ly, ray.r0m, r0e);               /* A0 */
                 if (nu < MIST__C(0))                                                /* A1 */
                     a = tau + MIST__FN(mist__hsun)(st[c], H, ly, ray.r1m, r1e);
@@ -2162,7 +2201,7 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
                         ls[c] += MIST__FN(mist__hmul)(E[c], sR[c], pR * fz, MIST__C(1), ray.cm, ce, a)
                                + MIST__FN(mist__hmul)(E[c], sM[c], pM * fz, MIST__C(1), ray.cm, ce, a);
                     } else {
-                        MIST__T oz = -MIST__M(expm1)(-z), inu = MIST__C(1) / anu;
+                        MIST__T oz = -MIST__M(expm1)(-z), inu = ly / anu;     /* 1/|nu| */
                         ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], pR * oz, inu, st[c], a, MIST__C(0))
                                + MIST__FN(mist__expmul)(E[c], sM[c], pM * oz, inu, st[c], a, MIST__C(0));
                     }
@@ -2263,7 +2302,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
     int sx[MIST_HFOG_MAX_LAYERS][3];
     MIST__HRAY seg[MIST_HFOG_MAX_LAYERS];
     MIST__T tau[3], tr[3], ls[3], bd[3], E[3], La[3], tb[65];
-    MIST__T w = 0, y = origin.y, s = length, pR = 0, ly = 0, nu = 0, anu = 0;
+    MIST__T w = 0, y = origin.y, s = length, pR = 0, ly = 0, anu = 0;
     int ok[MIST_HFOG_MAX_LAYERS], k, i, c, j, np = 0, cs = 0, same = 1, sunx = 0, any = 0;
     MIST__V3 v;
     for (c = 0; c < 3; ++c) { tau[c] = MIST__C(0); tr[c] = MIST__C(1); ls[c] = bd[c] = MIST__C(0); }
@@ -2302,7 +2341,9 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
         for (c = 0; c < 3; ++c) { E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]); }
         sunx = layers[0].sun_extinction != 0;
         ly = l.y;
-        if (ly > MIST__C(0)) { nu = (ly - w) / ly; anu = nu < MIST__C(0) ? -nu : nu; }
+        if (ly > MIST__C(0)) {   /* anu = |nu| ly, nu = 1 - w/ly (|nu| overflows for tiny ly) */
+            anu = ly - w; anu = anu < MIST__C(0) ? -anu : anu;
+        }
     }
     /* piece boundaries: equal steps of the square root of the
      * transmittance of channel cs (each piece's bound is then ~ its share
@@ -2368,6 +2409,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
             for (c = 0; c < 3; ++c) {
                 MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), wsum = MIST__C(0), lerr = MIST__C(0);
                 MIST__T wk[MIST_HFOG_MAX_LAYERS], lk[MIST_HFOG_MAX_LAYERS], ca[MIST_HFOG_MAX_LAYERS];
+                MIST__T wm[MIST_HFOG_MAX_LAYERS];
                 MIST__T cu[MIST_HFOG_MAX_LAYERS], famb = MIST__C(0), fsun = MIST__C(0), lmax = MIST__C(0);
                 MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2], ls0 = ls[c];
                 int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0;
@@ -2429,6 +2471,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         if (e > lerr) lerr = e;
                         if (k == ref || lk[k] > lmax) lmax = lk[k];
                     } else {
+                        wm[k] = wk[k];
                         wk[k] = MIST__M(ldexp)(wk[k], ke[k] - emax);
                     }
                 }
@@ -2439,9 +2482,22 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     wsum += wk[k];
                 }
                 if (!(wsum > MIST__C(0))) continue;
+                /* sum_k share_k c_k, each term one scaled product: a share
+                 * below the normal range keeps its precision (found by the
+                 * fuzzer: a 2e-40 share of a large light, 1200 eps off) */
                 for (k = 0; k < n; ++k) {
-                    famb += wk[k] / wsum * (ok[k] && st[k][c] > MIST__C(0) ? ca[k] : MIST__C(0));
-                    fsun += wk[k] / wsum * (ok[k] && st[k][c] > MIST__C(0) ? cu[k] : MIST__C(0));
+                    if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                    if (unb == 2) {
+                        famb += MIST__FN(mist__expmul)(ca[k], MIST__C(1), MIST__C(1), MIST__C(1), wsum,
+                                                       lmax - lk[k], MIST__C(0));
+                        fsun += MIST__FN(mist__expmul)(cu[k], MIST__C(1), MIST__C(1), MIST__C(1), wsum,
+                                                       lmax - lk[k], MIST__C(0));
+                    } else {
+                        famb += MIST__FN(mist__expmul_k)(wm[k], ca[k], MIST__C(1), MIST__C(1), wsum,
+                                                         MIST__C(0), MIST__C(0), ke[k] - emax);
+                        fsun += MIST__FN(mist__expmul_k)(wm[k], cu[k], MIST__C(1), MIST__C(1), wsum,
+                                                         MIST__C(0), MIST__C(0), ke[k] - emax);
+                    }
                 }
                 gj = MIST__M(exp)(-tj[c]);
                 om = dtau <= MIST__BIG ? -MIST__M(expm1)(-dtau) : MIST__C(1);   /* 1 - e^-dtau */
@@ -2498,13 +2554,13 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                      * dtau |nu| scaled (dtau may underflow where |nu|
                      * overflows: 0 inf was NaN, found by the fuzzer) */
                     MIST__T z = unb ? (MIST__T)INFINITY
-                              : MIST__FN(mist__expmul_k)(wsum, anu, MIST__C(1), MIST__C(1), MIST__C(1),
+                              : MIST__FN(mist__expmul_k)(wsum, anu, MIST__C(1), MIST__C(1), ly,
                                                          MIST__C(0), MIST__C(0), emax);
                     if (!(el > MIST__C(0))) gs = MIST__C(0);
                     else if (!unb)
                         gs = z < MIST__C(1) ? dtau * MIST__FN(mist__phi1)(z)
-                                            : -MIST__M(expm1)(-z) / anu;
-                    else gs = anu > MIST__C(0) ? MIST__C(1) / anu : MIST__C(0);
+                                            : -MIST__M(expm1)(-z) * (ly / anu);
+                    else gs = anu > MIST__C(0) ? ly / anu : MIST__C(0);
                     if (fsun > MIST__C(0) && el > MIST__C(0) && (gs > MIST__C(0) || !unb)) {
                         /* scaled as above where dtau |nu| < 1 */
                         MIST__T v = !unb && z < MIST__C(1)
@@ -2515,7 +2571,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         rnd[c] += v * plo;
                     }
                     fac = MIST__C(0.25) * dtau;              /* min(1/|nu|, dtau/4) */
-                    if (anu * fac > MIST__C(1)) fac = MIST__C(1) / anu;
+                    if (anu * fac > ly) fac = ly / anu;
                     bd[c] += MIST__C(0.5) * (cmax[1] - cmin[1]) * osc * dg * fac;
                     psi[c] = psi1;
                 }

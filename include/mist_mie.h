@@ -143,7 +143,8 @@
 #      define MIST_MIE__HAD_NO_MATH_ERRNO
 #    endif
 #    pragma GCC push_options
-#    pragma GCC optimize("no-fast-math", "no-math-errno", "no-trapping-math")
+#    pragma GCC optimize("no-fast-math", "no-math-errno", "no-trapping-math", \
+                         "fp-contract=off")
 #  endif
 #endif
 
