@@ -47,8 +47,10 @@
  * The parameters are variables, not constants: bench/mist_bench.c's
  * constant g lets the compiler fold part of HG (3.3 vs 6.4 ns there).
  *
- * PART 2: the exact Draine sampler against eq. 6 of the supplemental typed
- * in as printed, float and double: max |u - u*| over g in {0.01, 0.1, 0.5,
+ * PART 2: the exact Draine samplers (mist_draine_sample[f], and the
+ * prepared mist_phase_sample[f], prepared once per (g, alpha) outside the
+ * timed loop) against eq. 6 of the supplemental typed in as printed, float
+ * and double: max |u - u*| over g in {0.01, 0.1, 0.5,
  * 0.9}, alpha in {1, 17, 250} (the fits' regime) and 1006 xi (1000 uniform,
  * plus 1e-7, 1e-5, 1e-3 from either end), u* = tests/mist_ref.h's __float128
  * inversion of the exact CDF at the inputs each function actually receives
@@ -359,6 +361,10 @@ static double t_eq6f(void)   LOOP(float, draine_eq6f(cgf, caf, xbf[i]))
 static double t_eq6d(void)   LOOP(double, draine_eq6(cg, ca, xb[i]))
 static double t_mistf(void)  LOOP(float, mist_draine_samplef(cgf, caf, xbf[i]))
 static double t_mistd(void)  LOOP(double, mist_draine_sample(cg, ca, xb[i]))
+static mist_phase  cph;         /* prepared once per job (job_setup) */
+static mist_phasef cphf;
+static double t_prepf(void)  LOOP(float, mist_phase_samplef(&cphf, xbf[i]))
+static double t_prepd(void)  LOOP(double, mist_phase_sample(&cph, xb[i]))
 
 /* Timing jobs: a loop and the parameters it reads.  Each is timed as
  * bench/mist_bench.c does: a warm-up, then REPS repetitions in a row, the
@@ -391,6 +397,8 @@ static void job_setup(const job *j)
 {
     cg = j->g; ca = j->a; ck = j->k; cfog = j->fog; ct = j->t; cn = j->n;
     cgf = (float)j->g; caf = (float)j->a;
+    if (j->fn == t_prepf) cphf = mist_phase_drainef(cgf, caf);
+    if (j->fn == t_prepd) cph = mist_phase_draine(cg, ca);
 }
 
 static void run_jobs(void)
@@ -862,12 +870,15 @@ int main(int argc, char **argv)
 
     /* ---- part 2: samplers ------------------------------------------------ */
     {
-        enum { NX = 1006, NI = 4 };
+        enum { NX = 1006, NI = 6 };
         static const char *sname[NI] = { "eq. 6 as printed (float)",
                                          "eq. 6 as printed (double)", "mist float",
-                                         "mist double" };
+                                         "mist double", "mist float, prepared",
+                                         "mist double, prepared" };
         static const char *iname[NI] = { "eq. 6 as printed, float", "eq. 6 as printed, double",
-                                         "mist_draine_samplef", "mist_draine_sample" };
+                                         "mist_draine_samplef", "mist_draine_sample",
+                                         "mist_phase_samplef (prepared)",
+                                         "mist_phase_sample (prepared)" };
         double xs[NX], worst[NI], wg[NI][4], at[NI][3], cost[NI][12], med[NI], lo[NI], hi[NI];
         long bad[NI];
         int a, gi, c;
@@ -882,6 +893,8 @@ int main(int argc, char **argv)
             for (a = 0; a < 3; ++a) {
                 double g = SG[gi], al = SA[a];
                 float gf = (float)g, af = (float)al;
+                mist_phase ph = mist_phase_draine(g, al);
+                mist_phasef phf = mist_phase_drainef(gf, af);
                 for (i = 0; i < NX; ++i) {
                     float xf = (float)xs[i];
                     double ud = mist_draine_sample(g, al, xs[i]);
@@ -893,6 +906,8 @@ int main(int argc, char **argv)
                     u[1] = draine_eq6(g, al, xs[i]); r[1] = rd;
                     u[2] = uf;                 r[2] = rf;
                     u[3] = ud;                 r[3] = rd;
+                    u[4] = mist_phase_samplef(&phf, xf); r[4] = (double)ref_sample_from(gf, af, xf, u[4]);
+                    u[5] = mist_phase_sample(&ph, xs[i]); r[5] = (double)ref_sample_from(g, al, xs[i], u[5]);
                     for (c = 0; c < NI; ++c) {
                         double e = fabs(u[c] - r[c]);
                         if (!(u[c] >= -1 && u[c] <= 1)) ++bad[c];
@@ -900,7 +915,7 @@ int main(int argc, char **argv)
                         if (e > wg[c][gi]) wg[c][gi] = e;
                         if (e > worst[c]) {
                             worst[c] = e; at[c][0] = g; at[c][1] = al;
-                            at[c][2] = c == 0 || c == 2 ? (double)xf : xs[i];
+                            at[c][2] = c == 0 || c == 2 || c == 4 ? (double)xf : xs[i];
                         }
                     }
                 }
@@ -908,6 +923,8 @@ int main(int argc, char **argv)
                 add_job(t_eq6d, g, al, 0, D[0].fog, NULL, 0, &cost[1][gi * 3 + a]);
                 add_job(t_mistf, g, al, 0, D[0].fog, NULL, 0, &cost[2][gi * 3 + a]);
                 add_job(t_mistd, g, al, 0, D[0].fog, NULL, 0, &cost[3][gi * 3 + a]);
+                add_job(t_prepf, g, al, 0, D[0].fog, NULL, 0, &cost[4][gi * 3 + a]);
+                add_job(t_prepd, g, al, 0, D[0].fog, NULL, 0, &cost[5][gi * 3 + a]);
             }
         run_jobs();
         for (c = 0; c < NI; ++c) {
@@ -975,8 +992,9 @@ int main(int argc, char **argv)
         {
             pt P[NI];
             hline H[2];
-            static const char *cl[NI] = { "#d00000", "#ff7f0e", "#17becf", "#1f77b4" };
-            static const int sh[NI] = { 4, 3, 1, 0 };
+            static const char *cl[NI] = { "#d00000", "#ff7f0e", "#17becf", "#1f77b4",
+                                          "#2ca02c", "#9467bd" };
+            static const int sh[NI] = { 4, 3, 1, 0, 2, 2 };
             static char lb0[80];
             sprintf(lb0, "eq. 6 float: %ld results outside [-1, 1]", bad[0]);
             for (c = 0; c < NI; ++c) {
