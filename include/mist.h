@@ -171,28 +171,20 @@
  *
  * LICENSE: MIT (see end of file).
  */
-#ifndef MIST__TEMPLATE
-
-#ifndef MIST_H
-#define MIST_H
-
-#define MIST_VERSION_MAJOR 0
-#define MIST_VERSION_MINOR 1
-#define MIST_VERSION_PATCH 0
-#define MIST_VERSION_STRING "0.1.0"
-
-#include <math.h>
-#include <float.h>
-#include <stddef.h>
-
-/* The fast-math guard (see FAST MATH above), popped at the end of the file.
- * gcc: errno and trapping stay off as -ffast-math has them (the batch
+#if defined(MIST__FP_PUSH) || defined(MIST__FP_POP)
+/* ------------------------------------------------------------------------ */
+/* The fast-math guard (see FAST MATH above), included with MIST__FP_PUSH   */
+/* before mist's functions and with MIST__FP_POP after them, by this file   */
+/* and by mist_mie.h.                                                       */
+/* ------------------------------------------------------------------------ */
+/* gcc: errno and trapping stay off as -ffast-math has them (the batch
  * forms vectorise); signed zeros, NaN, infinity and the written order of
  * operations are honoured again; no contraction into FMA (-std=c99's
  * setting, which the pragma would otherwise reset to gcc's GNU default,
  * "fast", measured).  gcc 12's pop_options leaves the
  * predefined macros of these flags as the pragma set them (__FAST_MATH__
  * undefined, ...), so the includer's are noted here and put back there. */
+#ifdef MIST__FP_PUSH
 #if !defined(MIST_ALLOW_FAST_MATH) && !defined(__NVCC__) && (defined(__FAST_MATH__) \
     || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) \
     || defined(__ASSOCIATIVE_MATH__) || defined(__RECIPROCAL_MATH__))
@@ -227,6 +219,71 @@
                          "fp-contract=off")
 #  endif
 #endif
+#else
+#if defined(MIST__FP_GUARD) && MIST__FP_GUARD == 1
+#  pragma float_control(pop)
+#elif defined(MIST__FP_GUARD) && MIST__FP_GUARD == 2
+#  pragma GCC pop_options
+#  undef __FAST_MATH__
+#  undef __FINITE_MATH_ONLY__
+#  undef __ASSOCIATIVE_MATH__
+#  undef __RECIPROCAL_MATH__
+#  undef __NO_SIGNED_ZEROS__
+#  undef __NO_TRAPPING_MATH__
+#  undef __NO_MATH_ERRNO__
+#  ifdef MIST__HAD_FAST_MATH
+#    define __FAST_MATH__ 1
+#  endif
+#  ifdef MIST__HAD_FINITE_MATH_ONLY
+#    define __FINITE_MATH_ONLY__ 1
+#  else
+#    define __FINITE_MATH_ONLY__ 0
+#  endif
+#  ifdef MIST__HAD_ASSOCIATIVE_MATH
+#    define __ASSOCIATIVE_MATH__ 1
+#  endif
+#  ifdef MIST__HAD_RECIPROCAL_MATH
+#    define __RECIPROCAL_MATH__ 1
+#  endif
+#  ifdef MIST__HAD_NO_SIGNED_ZEROS
+#    define __NO_SIGNED_ZEROS__ 1
+#  endif
+#  ifdef MIST__HAD_NO_TRAPPING_MATH
+#    define __NO_TRAPPING_MATH__ 1
+#  endif
+#  ifdef MIST__HAD_NO_MATH_ERRNO
+#    define __NO_MATH_ERRNO__ 1
+#  endif
+#endif
+#  undef MIST__FP_GUARD
+#  undef MIST__HAD_FAST_MATH
+#  undef MIST__HAD_FINITE_MATH_ONLY
+#  undef MIST__HAD_ASSOCIATIVE_MATH
+#  undef MIST__HAD_RECIPROCAL_MATH
+#  undef MIST__HAD_NO_SIGNED_ZEROS
+#  undef MIST__HAD_NO_TRAPPING_MATH
+#  undef MIST__HAD_NO_MATH_ERRNO
+#endif
+
+#elif !defined(MIST__TEMPLATE)
+
+#ifndef MIST_H
+#define MIST_H
+
+#define MIST_VERSION_MAJOR 0
+#define MIST_VERSION_MINOR 1
+#define MIST_VERSION_PATCH 0
+#define MIST_VERSION_STRING "0.1.0"
+
+#include <math.h>
+#include <float.h>
+#include <stddef.h>
+
+/* The fast-math guard (see FAST MATH above): pushed here, popped at the
+ * end of the file (the section "The fast-math guard" at the top). */
+#define MIST__FP_PUSH
+#include "mist.h"
+#undef MIST__FP_PUSH
 
 /* The configuration's implications (see CONFIGURATION above). */
 #ifdef MIST_ONLY_HG
@@ -432,41 +489,9 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 
 #undef MIST__TEMPLATE
 
-#if defined(MIST__FP_GUARD) && MIST__FP_GUARD == 1
-#  pragma float_control(pop)
-#elif defined(MIST__FP_GUARD) && MIST__FP_GUARD == 2
-#  pragma GCC pop_options
-#  undef __FAST_MATH__
-#  undef __FINITE_MATH_ONLY__
-#  undef __ASSOCIATIVE_MATH__
-#  undef __RECIPROCAL_MATH__
-#  undef __NO_SIGNED_ZEROS__
-#  undef __NO_TRAPPING_MATH__
-#  undef __NO_MATH_ERRNO__
-#  ifdef MIST__HAD_FAST_MATH
-#    define __FAST_MATH__ 1
-#  endif
-#  ifdef MIST__HAD_FINITE_MATH_ONLY
-#    define __FINITE_MATH_ONLY__ 1
-#  else
-#    define __FINITE_MATH_ONLY__ 0
-#  endif
-#  ifdef MIST__HAD_ASSOCIATIVE_MATH
-#    define __ASSOCIATIVE_MATH__ 1
-#  endif
-#  ifdef MIST__HAD_RECIPROCAL_MATH
-#    define __RECIPROCAL_MATH__ 1
-#  endif
-#  ifdef MIST__HAD_NO_SIGNED_ZEROS
-#    define __NO_SIGNED_ZEROS__ 1
-#  endif
-#  ifdef MIST__HAD_NO_TRAPPING_MATH
-#    define __NO_TRAPPING_MATH__ 1
-#  endif
-#  ifdef MIST__HAD_NO_MATH_ERRNO
-#    define __NO_MATH_ERRNO__ 1
-#  endif
-#endif
+#define MIST__FP_POP
+#include "mist.h"
+#undef MIST__FP_POP
 
 #ifdef __cplusplus
 }
@@ -944,6 +969,25 @@ MIST__F MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIST__T c1, M
     return sg * un;
 }
 
+/* The residual's sign at u for the rounding of mist__draine_round: > 0 when
+ * F_g(u) > xi (the root lies below u), < 0 when it lies above; r of
+ * mist__draine_step (the u <= 0 form, mirrored for xi > 1/2).  For a fixed
+ * u it is non-increasing in xi however it rounds (r = A - fl(xi B), B > 0),
+ * so decisions taken by it at one u are monotone in xi. */
+MIST__F MIST__T MIST__FN(mist__draine_res)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
+                                           MIST__T st)
+{
+    MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
+    MIST__T u = sg * st, gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;
+    MIST__T v2 = MIST__FN(mist__v2)(g, st), v = MIST__M(sqrt)(v2);
+    MIST__T v1 = MIST__C(1) + gg, omg = MIST__C(1) - gg, a = MIST__C(1) + g * g;
+    MIST__T cn = c0 + c1 * (a + g * g) / MIST__C(3);
+    MIST__T p = v * v1, pa = p + a, d = MIST__C(3) * pa * pa;
+    MIST__T qp = (p + MIST__C(3) * a) * (v2 + a * u * u)
+               - u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * gg * u * v1);
+    return sg * (omg * (MIST__C(1) + u) * (c0 * d + c1 * qp) - x * (v * cn * ((v1 + v) * d)));
+}
+
 /* kb of mist__draine_step for u in [lo, hi]: f = A w h with w = c0 + c1 u^2
  * (monotone on each side of 0) and h = V^-3 (monotone: V^2 is linear in
  * u), so min f >= A min w min h and max f <= A max w max h, and |f'| =
@@ -967,6 +1011,32 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
 
 #ifndef MIST__INTERNAL_ONLY
 #ifndef MIST_NO_DRAINE
+#ifdef MIST__W
+/* uw, the wide solution at xi in [0, 1] (within eps_T / 64 (|u| + xi/f) of
+ * the root, by the stops of mist__draine_newton and _step), rounded to T
+ * monotonically in xi.  Plain rounding is not: where a rounding boundary
+ * (the midpoint between two T values) lies within uw's error, xi and its
+ * successor could round to opposite sides (g = 0x1.ffea16p-1, alpha = 2^32
+ * in float: u* = 1 - 2^-25 - 4.5e-11 rounded up to 1 at xi = 0x1.2116e4p-1
+ * and down at 0x1.2116e6p-1 ... 0x1.211712p-1, by errors of ~1e-11 that
+ * vary in xi).  So where the window uw +- eps_T |uw| / 16 (4x the stop's
+ * |u| term) holds a boundary, the residual's sign there picks the side
+ * (mist__draine_res: monotone in xi at a fixed point, and far more exact
+ * than the window).  One more evaluation of F, for ~1/8 of the samples
+ * (the window's share of an ulp).  Where xi/f dominates |u| (u within
+ * ~xi/f of 0) the stop's error may exceed the window: there uw itself
+ * must be monotone. */
+MIST__F MIST__T MIST__FN(mist__draine_round)(MIST__T g, MIST__W c0, MIST__W c1, MIST__T xi,
+                                             MIST__W uw)
+{
+    MIST__W w = (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 16), mid;
+    MIST__T lo = (MIST__T)(uw - w), hi = (MIST__T)(uw + w);
+    if (lo == hi) return lo;
+    mid = (MIST__W)0.5 * ((MIST__W)lo + (MIST__W)hi);          /* exact in W */
+    return MIST__WFN(mist__draine_res)((MIST__W)g, c0, c1, (MIST__W)xi, mid) > 0 ? lo : hi;
+}
+#endif
+
 /* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1); c0, c1:
  * the weights of alpha; f0: F_g(0) as hi + lo (a prepared phase function)
  * or NULL.  Newton in the wide type from [JD23 eq. 6] where it is good;
@@ -985,8 +1055,14 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     /* The start (good: 1 the table's, 2 eq. 6, 0 none): the prepared
      * table's; else [JD23 eq. 6] in double, which lands within 1.3e-5 of
      * the answer for 1e-3 <= |g| <= 0.9999 and 1e-6 <= alpha <= 1e4
-     * (measured; typically within 1e-12); else the HG answer. */
-    good = st > MIST__C(-1) && st < MIST__C(1);
+     * (measured; typically within 1e-12); else the HG answer.  Not the
+     * table's for |g| > 0.9999, where the HG answer is the better start:
+     * there the table's first and last intervals span nearly [-1, 1], and
+     * Newton from the far side of the root crept (f(u) >> f(u*)) and stopped
+     * at 1 for 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18,
+     * double), breaking accuracy and monotonicity. */
+    good = st > MIST__C(-1) && st < MIST__C(1) && g <= MIST__C(0.9999)
+           && g >= MIST__C(-0.9999);
     if (!good && (g >= MIST__C(1e-3) || g <= MIST__C(-1e-3)) && g <= MIST__C(0.9999)
         && g >= MIST__C(-0.9999) && alpha >= MIST__C(1e-6) && alpha <= MIST__C(1e4)) {
         double ud = mist__draine_eq6((double)g, (double)alpha, (double)x);
@@ -1001,7 +1077,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
         uw = st;
         MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                        (MIST__W)MIST__EPS / 64, 2 * MIST__MAXIT, &uw);
-        return (MIST__T)uw;
+        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
     }
     /* double: from eq. 6 straight to the wide steps (one usually lands);
      * from the table or HG first in T to its noise (long double is slower) */
@@ -1009,7 +1085,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     if (good == 2
         && MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                           (MIST__W)MIST__EPS / 64, 6, &uw))
-        return (MIST__T)uw;
+        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
 #endif
     if (f0) t0 = (f0[0] - x) + f0[1];
     u = st;
@@ -1019,7 +1095,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     uw = u;
     MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                    (MIST__W)MIST__EPS / 64, MIST__MAXIT, &uw);
-    u = (MIST__T)uw;
+    u = MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
 #endif
     return u;
 }
@@ -1060,7 +1136,8 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
                     ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
                     (MIST__W)MIST__EPS / 64, &ok);
-                if (ok) return uw < -1 ? MIST__C(-1) : (uw > 1 ? MIST__C(1) : (MIST__T)uw);
+                if (ok) return MIST__FN(mist__draine_round)(g, (MIST__W)fin, fin > 0
+                    ? (MIST__W)alpha : 1, xi, uw < -1 ? -1 : (uw > 1 ? 1 : uw));
                 if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
             }
         }

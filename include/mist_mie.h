@@ -111,42 +111,10 @@
 
 /* The fast-math guard of mist.h (see FAST MATH there; MIST_ALLOW_FAST_MATH
  * turns it off): without it gcc -ffast-math drops the NaN tests and
- * tests/test_mie.c crashes.  Popped at the end of the file, where gcc's
- * predefined macros of these flags are put back as mist.h does. */
-#if !defined(MIST_ALLOW_FAST_MATH) && !defined(__NVCC__) && (defined(__FAST_MATH__) \
-    || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) \
-    || defined(__ASSOCIATIVE_MATH__) || defined(__RECIPROCAL_MATH__))
-#  if defined(__clang__)
-#    pragma float_control(precise, on, push)
-#    define MIST_MIE__FP_GUARD 1
-#  elif defined(__GNUC__)
-#    define MIST_MIE__FP_GUARD 2
-#    ifdef __FAST_MATH__
-#      define MIST_MIE__HAD_FAST_MATH
-#    endif
-#    if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
-#      define MIST_MIE__HAD_FINITE_MATH_ONLY
-#    endif
-#    ifdef __ASSOCIATIVE_MATH__
-#      define MIST_MIE__HAD_ASSOCIATIVE_MATH
-#    endif
-#    ifdef __RECIPROCAL_MATH__
-#      define MIST_MIE__HAD_RECIPROCAL_MATH
-#    endif
-#    ifdef __NO_SIGNED_ZEROS__
-#      define MIST_MIE__HAD_NO_SIGNED_ZEROS
-#    endif
-#    ifdef __NO_TRAPPING_MATH__
-#      define MIST_MIE__HAD_NO_TRAPPING_MATH
-#    endif
-#    ifdef __NO_MATH_ERRNO__
-#      define MIST_MIE__HAD_NO_MATH_ERRNO
-#    endif
-#    pragma GCC push_options
-#    pragma GCC optimize("no-fast-math", "no-math-errno", "no-trapping-math", \
-                         "fp-contract=off")
-#  endif
-#endif
+ * tests/test_mie.c crashes.  Popped at the end of the file. */
+#define MIST__FP_PUSH
+#include "mist.h"
+#undef MIST__FP_PUSH
 
 #ifndef MIST_MIE_FUNC
 #  define MIST_MIE_FUNC static inline
@@ -1179,40 +1147,8 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
 }
 #endif
 
-#if defined(MIST_MIE__FP_GUARD) && MIST_MIE__FP_GUARD == 1
-#  pragma float_control(pop)
-#elif defined(MIST_MIE__FP_GUARD) && MIST_MIE__FP_GUARD == 2
-#  pragma GCC pop_options
-#  undef __FAST_MATH__
-#  undef __FINITE_MATH_ONLY__
-#  undef __ASSOCIATIVE_MATH__
-#  undef __RECIPROCAL_MATH__
-#  undef __NO_SIGNED_ZEROS__
-#  undef __NO_TRAPPING_MATH__
-#  undef __NO_MATH_ERRNO__
-#  ifdef MIST_MIE__HAD_FAST_MATH
-#    define __FAST_MATH__ 1
-#  endif
-#  ifdef MIST_MIE__HAD_FINITE_MATH_ONLY
-#    define __FINITE_MATH_ONLY__ 1
-#  else
-#    define __FINITE_MATH_ONLY__ 0
-#  endif
-#  ifdef MIST_MIE__HAD_ASSOCIATIVE_MATH
-#    define __ASSOCIATIVE_MATH__ 1
-#  endif
-#  ifdef MIST_MIE__HAD_RECIPROCAL_MATH
-#    define __RECIPROCAL_MATH__ 1
-#  endif
-#  ifdef MIST_MIE__HAD_NO_SIGNED_ZEROS
-#    define __NO_SIGNED_ZEROS__ 1
-#  endif
-#  ifdef MIST_MIE__HAD_NO_TRAPPING_MATH
-#    define __NO_TRAPPING_MATH__ 1
-#  endif
-#  ifdef MIST_MIE__HAD_NO_MATH_ERRNO
-#    define __NO_MATH_ERRNO__ 1
-#  endif
-#endif
+#define MIST__FP_POP
+#include "mist.h"
+#undef MIST__FP_POP
 
 #endif /* MIST_MIE_H */
