@@ -40,6 +40,36 @@ static inline int mt_done(const char *name)
 }
 
 /* ------------------------------------------------------------------------ */
+/* Quick mode: MIST_TEST_QUICK=k in the environment (an integer k >= 1;     */
+/* unset, empty, 0 or 1: full size) divides the random draws and sample     */
+/* counts of test_accuracy, test_chi2 and test_height_fog by k.  The fixed  */
+/* edge cases and grids always run in full.  For the slow sub-builds of     */
+/* tests/robustness.cmake (the asan variant, -O0 under ASan + UBSan), so    */
+/* that they run the whole suite; the main build runs at full size.         */
+/* ------------------------------------------------------------------------ */
+
+static inline long mt_quick(void)
+{
+    static long k = 0;
+    if (k == 0) {
+        const char *e = getenv("MIST_TEST_QUICK");
+        k = e && *e ? strtol(e, NULL, 10) : 1;
+        if (k < 1) k = 1;
+        if (k > 1) printf("MIST_TEST_QUICK=%ld: random draws and sample counts / %ld\n", k, k);
+    }
+    return k;
+}
+
+/* n / k (k from MIST_TEST_QUICK), but not below lo (and never above n):
+ * each caller's lo is the smallest count its thresholds are justified for. */
+static inline long mt_scale(long n, long lo)
+{
+    long m = n / mt_quick();
+    if (m < lo) m = lo;
+    return m < n ? m : n;
+}
+
+/* ------------------------------------------------------------------------ */
 /* Random numbers: splitmix64, fixed seeds, so every run is reproducible.   */
 /* ------------------------------------------------------------------------ */
 

@@ -12,7 +12,9 @@
 #                        exit 77, without clang and libFuzzer)
 #   variant_<name>       a sub-build of this tree with other compiler flags
 #                        (MIST_VARIANT_LIST: asan, fastmath, O0, O3, nofma)
-#                        running its tests (see "Variants" below;
+#                        running its tests, accuracy, chi2 and height_fog
+#                        with MIST_TEST_QUICK=MIST_VARIANT_QUICK (see
+#                        "Variants" below;
 #                        MIST_VARIANTS; the sub-builds set it OFF: no
 #                        recursion)
 # and compile tests of these sources under gcc and clang, as CMakeLists.txt
@@ -62,38 +64,45 @@ endforeach()
 # -O0, -O3, and without FMA contraction".  CI runs the README's test
 # command on 2 cores in ~4 minutes with these, so the default list is three
 # variants that, with the main build, cover the five (CPU seconds measured
-# with gcc 12 on this project's 2-core machine):
+# with gcc 12 on this project's 2-core machine).  The whole ctest run takes
+# ~400 s of user CPU (404 s measured, fresh build dir, ctest -j2; before
+# the asan variant ran accuracy, chi2 and height_fog: 367 s); asan is the
+# longest job (~190 s wall of a ~400 s run on the 2 cores shared with
+# other work, load ~3):
 #   asan      -O0 -g, AddressSanitizer + UndefinedBehaviorSanitizer: the
-#             sanitizer variant and the -O0 variant.
-#             Every test but accuracy, chi2 and height_fog, which at -O2
-#             alone take 13, 5.5 and 10 s of the suite's ~33 s, and several
-#             times that at -O0 with ASan: they draw millions of samples and
-#             rays through the functions that stress (2e6 calls here),
-#             quadrature, the fuzz replays and the fuzz_* tests (clang ASan
-#             + UBSan) also reach, for numbers the sanitizers do not check.
-#             ~52 s for the whole variant (build 16 s wall).
+#             sanitizer variant and the -O0 variant.  Every test (but the
+#             compile and consumer tests, as in every variant: their flags
+#             are their own), with MIST_TEST_QUICK=MIST_VARIANT_QUICK (4):
+#             accuracy, chi2 and height_fog draw a quarter of their random
+#             points and samples (chi2: not below half the scalar and a
+#             quarter of the direction samples, where its negative controls
+#             are still rejected, see test_chi2.c), every fixed edge case
+#             and grid in full.  Measured (CPU s under ASan, gcc 12, full
+#             size -> quick): accuracy 31 -> 12, chi2 11.6 -> 5.5,
+#             height_fog 17.7 -> 11 (its issue grids are fixed).  Stress
+#             makes 2e6 calls here.
 #   fastmath  -O2 -ffast-math.  The header guards itself
 #             (FAST MATH in include/mist.h); what -ffast-math still changes
 #             is the start-up flushing of subnormals (FTZ/DAZ), so the
 #             stress test keeps to its MI_FAST subset (tests/mist_inv.h:
 #             finite, normal-range input, tolerances that allow the
-#             flushing).  Not with -march=native: see FAST MATH (one
-#             bit-for-bit check of test_domain fails there).  Every test
-#             but fuzz_replay_hfog: its corpus is raw bit patterns (NaN,
-#             inf, subnormal fields) and the harness, compiled with
-#             -ffast-math itself, does not keep replayed input to the
-#             MI_FAST subset: 10 of 487 inputs failed (e.g. "in-scattering
-#             without extinction" at T = 0 for regress-col-nan-d).  That
-#             replay runs in the main build and under asan.
+#             flushing), and so do the fuzz harnesses replaying the corpus
+#             (fuzz_hfog.c reads its raw-bits "direct" records through the
+#             generators there; replayed raw, 13 of the 549 inputs failed).
+#             Not with -march=native: see FAST MATH (one bit-for-bit check
+#             of test_domain fails there).  Every test (as asan), quick 4.
 #   O3        -O3 -march=native -ffp-contract=fast (contraction wherever
-#             the host has FMA): every test.
+#             the host has FMA): every test (as asan), quick 4.
+# The main build runs accuracy, chi2 and height_fog at full size (no
+# MIST_TEST_QUICK): the variants check that other flags change nothing,
+# the main build carries the statistical power.
 # "Without FMA contraction": the main build (gcc -std=c99 means
 # -ffp-contract=off, and x86-64 without -march has no FMA instruction) and
 # fastmath (the header's guard sets fp-contract=off under gcc).  Explicit
 # fma() on FMA hardware without contraction is nofma below, not in the
 # default list: with -march=native added to asan, quadrature took 5x longer
 # (34 s against 7 s of CPU at -O0 with ASan, measured).
-# and on request (MIST_VARIANT_LIST), every test each:
+# and on request (MIST_VARIANT_LIST), every test each, MIST_TEST_QUICK=4:
 #   O0        -O0 without sanitizers
 #   nofma     -O2 -march=native -ffp-contract=off without -ffast-math
 # The main build's stress test makes the 1e8 calls; the variants' 5e6
@@ -108,6 +117,8 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
   endif()
   set(MIST_VARIANT_LIST "asan;fastmath;O3" CACHE STRING
       "The variants to test (MIST_VARIANTS): any of asan fastmath O3 O0 nofma")
+  set(MIST_VARIANT_QUICK 4 CACHE STRING
+      "MIST_TEST_QUICK for the variants' accuracy, chi2 and height_fog tests (1: full size)")
   function(mist_variant name flags calls exclude)
     if(NOT name IN_LIST MIST_VARIANT_LIST)
       return()
@@ -115,13 +126,12 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
     add_test(NAME variant_${name}
              COMMAND sh ${_src}/tests/variant.sh ${name} ${_src}
                      ${CMAKE_CURRENT_BINARY_DIR}/variant-${name} ${CMAKE_C_COMPILER}
-                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}")
+                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" ${MIST_VARIANT_QUICK})
     set_tests_properties(variant_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 COST 100)
   endfunction()
   # name, CMAKE_C_FLAGS, MIST_STRESS_CALLS, the tests left out (a regex)
-  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all"
-               2e6 "^(accuracy|chi2|height_fog)$")
-  mist_variant(fastmath "-O2 -ffast-math" 5e6 "^fuzz_replay_hfog$")
+  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6 "")
+  mist_variant(fastmath "-O2 -ffast-math" 5e6 "")
   mist_variant(O3 "-O3 ${_native} -ffp-contract=fast" 5e6 "")
   mist_variant(O0 "-O0" 5e6 "")
   mist_variant(nofma "-O2 ${_native} -ffp-contract=off" 5e6 "")

@@ -32,10 +32,16 @@ static int use_prep = 0;
 
 static double sample_d(int kind, double g, double a, double xi)
 {
-    if (use_prep) {
-        mist_phase p = kind == KIND_HG ? mist_phase_hg(g)
-                     : kind == KIND_DRAINE ? mist_phase_draine(g, a)
-                     : kind == KIND_CS ? mist_phase_cs(g) : mist_phase_rayleigh();
+    if (use_prep) {     /* the last one prepared, kept (preparing costs ~128 samples) */
+        static mist_phase p;
+        static int pk = -1;
+        static double pg, pa;
+        if (pk != kind || !(pg == g) || !(pa == a)) {
+            p = kind == KIND_HG ? mist_phase_hg(g)
+              : kind == KIND_DRAINE ? mist_phase_draine(g, a)
+              : kind == KIND_CS ? mist_phase_cs(g) : mist_phase_rayleigh();
+            pk = kind; pg = g; pa = a;
+        }
         return mist_phase_sample(&p, xi);
     }
     switch (kind) {
@@ -49,9 +55,15 @@ static double sample_d(int kind, double g, double a, double xi)
 static float sample_f(int kind, float g, float a, float xi)
 {
     if (use_prep) {
-        mist_phasef p = kind == KIND_HG ? mist_phase_hgf(g)
-                      : kind == KIND_DRAINE ? mist_phase_drainef(g, a)
-                      : kind == KIND_CS ? mist_phase_csf(g) : mist_phase_rayleighf();
+        static mist_phasef p;
+        static int pk = -1;
+        static float pg, pa;
+        if (pk != kind || !(pg == g) || !(pa == a)) {
+            p = kind == KIND_HG ? mist_phase_hgf(g)
+              : kind == KIND_DRAINE ? mist_phase_drainef(g, a)
+              : kind == KIND_CS ? mist_phase_csf(g) : mist_phase_rayleighf();
+            pk = kind; pg = g; pa = a;
+        }
         return mist_phase_samplef(&p, xi);
     }
     switch (kind) {
@@ -186,16 +198,16 @@ static void test_monotone(void)
     static double xs[N];
     mt_rng rng = { 99 };
     size_t ig, ia;
-    int k, kind, bad_d, bad_f;
-    for (k = 0; k < N; ++k) xs[k] = random_xi(&rng, k);
-    qsort(xs, N, sizeof *xs, cmp_double);
+    int k, kind, bad_d, bad_f, n = (int)mt_scale(N, 500);   /* MIST_TEST_QUICK */
+    for (k = 0; k < n; ++k) xs[k] = random_xi(&rng, k);
+    qsort(xs, (size_t)n, sizeof *xs, cmp_double);
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
             for (ia = 0; ia < (kind == KIND_DRAINE ? sizeof as / sizeof *as : 1); ++ia) {
                 double g = gs[ig], a = as[ia], prev = -2;
                 float prevf = -2, xf;
                 bad_d = bad_f = 0;
-                for (k = 0; k < N; ++k) {
+                for (k = 0; k < n; ++k) {
                     double u = sample_d(kind, g, a, xs[k]);
                     float uf = sample_f(kind, (float)g, (float)a, (float)xs[k]);
                     bad_d += u < prev; prev = u;
@@ -263,6 +275,75 @@ static void test_huge_alpha(void)
         }
 }
 
+/* |g| -> 1, alpha >= 1e4 (the stress test at 1e9 calls).  Where the peak is
+ * narrower than an ulp of u next to +-1 the CDF jumps across the last
+ * rounding boundary b = +-(1 - ulp/2) (float: g = +-0x1.ffea16p-1 puts
+ * 0.56 of the mass in [1 - 2^-24, 1]), and rounding a root whose error
+ * varies in xi gave 1 at xi = 0x1.2116e4p-1 and 1 - 2^-24 at 0x1.211712p-1
+ * (alpha = 2^32; the same at -g, alpha = 0x1.93e596p+99, xi = 0x1.bdd264p-2).
+ * And the prepared double sampler, from its table's start, stopped at 1 for
+ * 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18).  Runs of
+ * adjacent doubles and floats, centred on: xi = F(b) of each type (the
+ * float128 reference's CDF), 1/2, F(0), the reported xi near 0 and its
+ * mirror near 1; and sorted random xi.  Monotone in xi, and the centres
+ * and every 256th random xi against the bar (the float128 reference costs
+ * ~3 ms a point here: its Newton creeps next to +-1). */
+static void near_one_run(double g, double a, double x, int n, int *bad_d, int *bad_f)
+{
+    double prev = -2;
+    float xf = (float)x, prevf = -2;
+    int k;
+    for (k = 0; k < n / 2; ++k) { x = nextafter(x, 0); xf = nextafterf(xf, 0); }
+    for (k = 0; k < n; ++k) {
+        double u = sample_d(KIND_DRAINE, g, a, x);
+        float uf = sample_f(KIND_DRAINE, (float)g, (float)a, xf);
+        *bad_d += u < prev; prev = u;
+        *bad_f += uf < prevf; prevf = uf;
+        if (k == n / 2) { check_point(KIND_DRAINE, g, a, x); check_point(KIND_DRAINE, g, a, xf); }
+        x = nextafter(x, 1); xf = nextafterf(xf, 1);
+    }
+}
+
+static void test_near_one(void)
+{
+    static const double gs[] = { 0x1.ffea16p-1, 0.999, 0.9999, 1 - 0x1p-20, 1 - 0x1p-24,
+                                 1 - 0x1p-40, 1 - 0x1p-50 };
+    static const double as[] = { 1e4, 0x1p32, 0x1.93e596p+99, 1e38, INFINITY };
+    enum { N = 3000 };
+    static double xs[N];
+    mt_rng rng = { 4242 };
+    size_t ig, ia;
+    int k, c, s, bad_d, bad_f, n = (int)mt_scale(N, 300), run = (int)mt_scale(4096, 512);
+    for (k = 0; k < n; ++k) xs[k] = random_xi(&rng, k);
+    qsort(xs, (size_t)n, sizeof *xs, cmp_double);
+    for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
+        for (s = -1; s <= 1; s += 2)
+            for (ia = 0; ia < sizeof as / sizeof *as; ++ia) {
+                double g = s * gs[ig], a = as[ia], prev = -2;
+                float gf = (float)g, prevf = -2;
+                qreal qa = a > 1e308 ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
+                qreal qaf = a > 1e308 ? qa : (qreal)(float)a;
+                double cs[6];
+                cs[0] = (double)ref_cdf(g, qa, s * (1 - (qreal)0x1p-54));
+                cs[1] = (double)ref_cdf(gf, qaf, s * (1 - (qreal)0x1p-25));
+                cs[2] = 0.5;
+                cs[3] = (double)ref_cdf(g, qa, 0);
+                cs[4] = 0x1.0fe683p-18;
+                cs[5] = 1 - 0x1.0fe683p-18;
+                bad_d = bad_f = 0;
+                for (c = 0; c < 6; ++c) near_one_run(g, a, cs[c], run, &bad_d, &bad_f);
+                for (k = 0; k < n; ++k) {
+                    double u = sample_d(KIND_DRAINE, g, a, xs[k]);
+                    float uf = sample_f(KIND_DRAINE, gf, (float)a, (float)xs[k]);
+                    bad_d += u < prev; prev = u;
+                    bad_f += uf < prevf; prevf = uf;
+                    if (k % 256 == 0) check_point(KIND_DRAINE, g, a, xs[k]);
+                }
+                mt_check(bad_d == 0 && bad_f == 0, "draine g=%.17g alpha=%g monotone in xi "
+                         "(|g| -> 1: %d double, %d float decreases)", g, a, bad_d, bad_f);
+            }
+}
+
 /* The reported failures themselves (independent float128 values). */
 static void test_issue2_points(void)
 {
@@ -274,18 +355,20 @@ int main(void)
 {
     int kind;
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
-        test_grid(kind, kind == KIND_DRAINE ? 150 : 400);
+        test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(150, 10) : mt_scale(400, 20)));
     test_issue2_points();
     test_huge_alpha();
+    test_near_one();
     /* the prepared phase functions (mist_phase_*): the same bar */
     use_prep = 1;
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
-        test_grid(kind, kind == KIND_DRAINE ? 60 : 100);
+        test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(60, 10) : mt_scale(100, 20)));
     test_huge_alpha();
-    test_random_params(1000);
+    test_near_one();
+    test_random_params((int)mt_scale(1000, 100));
     test_monotone();
     use_prep = 0;
-    test_random_params(3000);
+    test_random_params((int)mt_scale(3000, 300));
     test_delta();
     test_monotone();
     printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f, float %.3f\n",

@@ -47,6 +47,18 @@
 #define K_DIR_U 20
 #define K_DIR_PHI 16
 
+/* Quick mode (MIST_TEST_QUICK=k, tests/mist_test.h; the sub-builds of
+ * tests/robustness.cmake): N_SCALAR / k, not below N_SCALAR / 2, and
+ * N_DIR / k, not below N_DIR / 4; the bins, the level and the negative
+ * controls unchanged.  Still ~780 resp. 125 expected per bin or cell: the
+ * chi-square approximation holds (mt_chi2 pools below 5).  The floors keep
+ * the power: at N_SCALAR / 4 negative control (b) below was NOT always
+ * rejected (p = 2.6e-9 .. 3.8e-4 over 5 seed sets, 2 of them above the
+ * per-test level ~4e-5); at the floors, over 13 seed sets (the default
+ * and 12 others by -DTEST_CHI2_SEED; MIST_TEST_QUICK=4, gcc 12 -O2 and
+ * -O0 ASan), p was (a) 1e-71 .. 5e-44, (b) 3e-22 .. 1.3e-11, (c) 0, and
+ * every positive test passed (smallest p 6.4e-4). */
+
 /* Bins are built from a fine grid of M_SUB sub-intervals per warp (the HG
  * quantile, see make_bins), each integrated to an absolute error QUAD_TOL
  * in probability.  With <= 2 * 1024 sub-intervals the expected count of a
@@ -358,17 +370,17 @@ static void test_scalar(const spec *s, int negative)
 {
     mt_rng r;
     double total, p;
-    int nb, quad_ok, dof, n, bad = 0;
+    int nb, quad_ok, dof, n, bad = 0, ns = (int)mt_scale(N_SCALAR, N_SCALAR / 2);
     if (counting) { n_positive += !negative; return; }
     nb = make_bins(s, K_SCALAR, edge, prob, &total, &quad_ok);
     memset(obs, 0, sizeof obs);
     r.s = seed++;
-    for (n = 0; n < N_SCALAR; ++n) {
+    for (n = 0; n < ns; ++n) {
         double u = sample_u(s, &r);
         if (!(u >= -1 && u <= 1)) { ++bad; continue; }
         obs[find_bin(edge, nb, u)] += 1;
     }
-    for (n = 0; n < nb; ++n) expct[n] = N_SCALAR * prob[n];
+    for (n = 0; n < nb; ++n) expct[n] = ns * prob[n];
     p = mt_chi2(obs, expct, nb, &dof);
     verdict(s, s->label, "u", negative, nb, total, quad_ok, p, dof);
     if (!negative)
@@ -398,6 +410,7 @@ static void test_dir(const spec *s, const double wi[3], const char *wname,
     double total, p, n[3], t[3], b[3], h[3] = {1, 0, 0}, hn, maxdev = 0;
     double tol = s->fl ? UNIT_TOL_F : UNIT_TOL_D;
     int nb, quad_ok, dof, k, bad = 0, negative = bug != FRAME_OK;
+    int nd = (int)mt_scale(N_DIR, N_DIR / 4);
     char label[160];
     if (counting) { n_positive += !negative; return; }
     /* the test's own frame around wi: Gram-Schmidt from a fixed axis */
@@ -413,7 +426,7 @@ static void test_dir(const spec *s, const double wi[3], const char *wname,
     nb = make_bins(s, K_DIR_U, edge, prob, &total, &quad_ok);
     memset(obs, 0, sizeof obs);
     r.s = seed++;
-    for (k = 0; k < N_DIR; ++k) {
+    for (k = 0; k < nd; ++k) {
         double wo[3], w[3], pdf, len, x, y, z, s2, u, phi;
         int i, j;
         sample_dir(s, bug, wi, &r, wo, &pdf);
@@ -438,7 +451,7 @@ static void test_dir(const spec *s, const double wi[3], const char *wname,
         obs[i * K_DIR_PHI + j] += 1;
     }
     for (k = 0; k < nb * K_DIR_PHI; ++k)
-        expct[k] = (double)N_DIR * prob[k / K_DIR_PHI] / K_DIR_PHI;
+        expct[k] = (double)nd * prob[k / K_DIR_PHI] / K_DIR_PHI;
     p = mt_chi2(obs, expct, nb * K_DIR_PHI, &dof);
     snprintf(label, sizeof label, "%s wi=%s%s", s->label, wname,
              bug == FRAME_HALF_PHI ? " [phi in 0..pi]" :

@@ -853,12 +853,13 @@ static void test_segment(int is_float)
     static const double lens[] = { 1, 37.5, 1e-3 };
     double worst[2] = { 0, 0 }, eps = is_float ? 0x1p-24 : 0x1p-53;
     size_t ip, iq, il, np = sizeof ps / sizeof *ps;
+    size_t nr = (size_t)mt_scale(40, 4);   /* random q per random p (MIST_TEST_QUICK) */
     int near;
     mt_rng rng = { 77 };
     clock_t t0 = clock();
     for (il = 0; il < 3; ++il)
         for (ip = 0; ip < np + 40; ++ip)
-            for (iq = 0; iq < (ip < np ? np + 6 : 40); ++iq) {
+            for (iq = 0; iq < (ip < np ? np + 6 : nr); ++iq) {
                 double len = lens[il], p, q, k0, k1, got[2], tr;
                 LD P, Q, ref[2], t1;
                 int j;
@@ -1059,8 +1060,8 @@ static void test_bad(void)
     {
         static const double ex[] = { 0, 1e-310, 1e-200, 1e-20, 1e-3, 0.5, 1, 3, 1e3, 1e20, 1e200, 1e308 };
         mt_rng rng = { 99 };
-        int bad = 0;
-        for (k = 0; k < 20000; ++k) {
+        int bad = 0, nk = (int)mt_scale(20000, 2000);     /* MIST_TEST_QUICK */
+        for (k = 0; k < nk; ++k) {
             double v[12];
             int j;
             for (j = 0; j < 12; ++j) v[j] = ex[mt_next(&rng) % 12] * ((mt_next(&rng) & 1) && j < 3 ? -1 : 1);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS EXCLUDE
+# variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS EXCLUDE [QUICK]
 # Configures, builds and tests a sub-build of the mist tree SRC in BIN with
 # the C compiler CC, CMAKE_C_FLAGS=FLAGS (build type "Variant": no other
 # optimisation flags), MIST_ROBUSTNESS=ON (the stress and replay tests) and
@@ -7,11 +7,14 @@
 # then runs every ctest test of that build except the compile tests, the
 # consumer test (neither depends on FLAGS) and those whose names match the
 # regular expression EXCLUDE ("" for none), with
-# MIST_STRESS_CALLS=STRESS_CALLS for the stress test.  Exits 77 (ctest:
+# MIST_STRESS_CALLS=STRESS_CALLS for the stress test and MIST_TEST_QUICK=QUICK
+# (default 1: full size) for test_accuracy, test_chi2 and test_height_fog
+# (tests/mist_test.h: their random draws and sample counts / QUICK, the
+# fixed edge cases and grids in full).  Exits 77 (ctest:
 # skipped) with a message when CC cannot build and run a program with FLAGS
 # (e.g. no sanitizer runtime).
 set -u
-name=$1; src=$2; bin=$3; cc=$4; gen=$5; flags=$6; calls=$7; exclude=$8
+name=$1; src=$2; bin=$3; cc=$4; gen=$5; flags=$6; calls=$7; exclude=$8; quick=${9:-1}
 mkdir -p "$bin" || exit 1
 probe="$bin/probe.c"
 printf '%s\n' '#include <math.h>' '#include <stdio.h>' \
@@ -33,7 +36,7 @@ echo "variant $name: configured and built in $((t1 - t0)) s"
 cd "$bin" || exit 1
 skip="^(compile_.*|consumer)\$"
 [ -n "$exclude" ] && skip="$skip|$exclude"
-MIST_STRESS_CALLS=$calls ctest -E "$skip" -j 2 --output-on-failure
+MIST_STRESS_CALLS=$calls MIST_TEST_QUICK=$quick ctest -E "$skip" -j 2 --output-on-failure
 rc=$?
 echo "variant $name: tests ran in $(($(date +%s) - t1)) s"
 exit $rc
