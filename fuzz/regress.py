@@ -113,6 +113,13 @@ CASES = {
                                    0.5 - 2.0**-40),
         # float, g = 0, alpha = 1e8: -0.296 at 0x1.fffffep-2 (F^-1 = -0.0039)
         'draine-half-f': phase(6, 'f', 0.0, 1e8, '0x1.fffffep-2', 0.5 - 2.0**-17),
+        # float, |g| -> 1, huge alpha (stress test, 1e9 calls): not monotone,
+        # 1 then 1 - 2^-24 (F^-1 = 1 - 2^-25 - 4.5e-11 at both): rounding a
+        # root whose error varies in xi across the last rounding boundary
+        'draine-near1-f': phase(6, 'f', '0x1.ffea16p-1', 2.0**32, '0x1.2116e4p-1',
+                                '0x1.211712p-1'),
+        'draine-near1-neg-f': phase(6, 'f', '-0x1.ffea16p-1', '0x1.93e596p+99',
+                                    '0x1.bdd228p-2', '0x1.bdd264p-2'),
     },
     'hfog': {
         # column -inf (the exponent's low part (1 - xl) < 0 for |a| >= 2^53)

@@ -948,10 +948,11 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
  * f(z') (z, z' between u0 and u*), so |u1 - u*| <= kb s^2 with kb =
  * max|f'| max f^2 / (2 min f^3) over an interval holding u0 and u*
  * (mist__draine_kb; both lie in the table interval of xi, widened for
- * rounding).  *ok: that bound is below tol (|u1| + x / f(u0)).  Returns u1
- * (NaN or inf with *ok = 0 where f = 0). */
+ * rounding).  *ok: that bound is below tol (|u1| + x / f(u0)); *eb: the
+ * bound kb s^2.  Returns u1 (NaN or inf with *ok = 0 where f = 0). */
 MIST__F MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
-                                            MIST__T st, MIST__T kb, MIST__T tol, int *ok)
+                                            MIST__T st, MIST__T kb, MIST__T tol, int *ok,
+                                            MIST__T *eb)
 {
     MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
     MIST__T u = sg * st, gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;
@@ -964,8 +965,9 @@ MIST__F MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIST__T c1, M
     MIST__T dd = (v1 + v) * d, m = omg2 * wt;
     MIST__T r = omg * (MIST__C(1) + u) * (c0 * d + c1 * qp) - x * (v * cn * dd);
     MIST__T s = r * v2 / (MIST__C(0.5) * m * dd), un = u - s;   /* (F - x) / f */
-    *ok = kb * s * s * m <= tol * ((un < MIST__C(0) ? -un : un) * m
-                                   + MIST__C(2) * x * cn * v2 * v);
+    *eb = kb * s * s;
+    *ok = *eb * m <= tol * ((un < MIST__C(0) ? -un : un) * m
+                            + MIST__C(2) * x * cn * v2 * v);
     return sg * un;
 }
 
@@ -1019,17 +1021,18 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
  * successor could round to opposite sides (g = 0x1.ffea16p-1, alpha = 2^32
  * in float: u* = 1 - 2^-25 - 4.5e-11 rounded up to 1 at xi = 0x1.2116e4p-1
  * and down at 0x1.2116e6p-1 ... 0x1.211712p-1, by errors of ~1e-11 that
- * vary in xi).  So where the window uw +- eps_T |uw| / 16 (4x the stop's
- * |u| term) holds a boundary, the residual's sign there picks the side
- * (mist__draine_res: monotone in xi at a fixed point, and far more exact
- * than the window).  One more evaluation of F, for ~1/8 of the samples
- * (the window's share of an ulp).  Where xi/f dominates |u| (u within
- * ~xi/f of 0) the stop's error may exceed the window: there uw itself
- * must be monotone. */
+ * vary in xi).  So where the window uw +- w (w: the error bound; eps_T
+ * |uw| / 16 after mist__draine_newton, 4x its stop's |u| term) holds a
+ * boundary, the residual's sign there picks the side (mist__draine_res:
+ * monotone in xi at a fixed point, and far more exact than the window).
+ * One more evaluation of F, for the window's share of an ulp of the
+ * samples (1/16 to 1/8 after the solver, ~2^-9 after the prepared step).
+ * Where xi/f dominates |u| (u within ~xi/f of 0) the solver's error may
+ * exceed its window: there uw itself must be monotone. */
 MIST__F MIST__T MIST__FN(mist__draine_round)(MIST__T g, MIST__W c0, MIST__W c1, MIST__T xi,
-                                             MIST__W uw)
+                                             MIST__W uw, MIST__W w)
 {
-    MIST__W w = (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 16), mid;
+    MIST__W mid;
     MIST__T lo = (MIST__T)(uw - w), hi = (MIST__T)(uw + w);
     if (lo == hi) return lo;
     mid = (MIST__W)0.5 * ((MIST__W)lo + (MIST__W)hi);          /* exact in W */
@@ -1077,7 +1080,8 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
         uw = st;
         MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                        (MIST__W)MIST__EPS / 64, 2 * MIST__MAXIT, &uw);
-        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
+        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
+                                            (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 16));
     }
     /* double: from eq. 6 straight to the wide steps (one usually lands);
      * from the table or HG first in T to its noise (long double is slower) */
@@ -1085,7 +1089,8 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     if (good == 2
         && MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                           (MIST__W)MIST__EPS / 64, 6, &uw))
-        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
+        return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
+                                            (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 16));
 #endif
     if (f0) t0 = (f0[0] - x) + f0[1];
     u = st;
@@ -1095,7 +1100,8 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     uw = u;
     MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                    (MIST__W)MIST__EPS / 64, MIST__MAXIT, &uw);
-    u = MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw);
+    u = MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
+                                     (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 16));
 #endif
     return u;
 }
@@ -1125,19 +1131,24 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
              * range.  Double: first one step in T (long double is slow). */
             int ok, k;
             MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut;
-            MIST__W uw = st;                    /* weights (1, alpha): exact */
+            MIST__W uw = st, eb;                /* weights (1, alpha): exact */
             kb = tab[2 * MIST__PHASE_K + 2 + j];
             if (MIST__EPS < 1e-10) {
+                MIST__T et;
                 ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, st, kb,
-                                                 MIST__C(0), &ok);
+                                                 MIST__C(0), &ok, &et);
                 if (ut >= tab[j] && ut <= tab[j + 1]) uw = ut;
             }
             for (k = 0; k < 2; ++k) {
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
                     ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
-                    (MIST__W)MIST__EPS / 64, &ok);
+                    (MIST__W)MIST__EPS / 64, &ok, &eb);
+                /* rounded within the step's bound (2x) and W's rounding of
+                 * u1 (|u| eps_T / 512 >= 4 ulp of W): a window ~2^-9 of an
+                 * ulp of T wide, so the extra evaluation is rare */
                 if (ok) return MIST__FN(mist__draine_round)(g, (MIST__W)fin, fin > 0
-                    ? (MIST__W)alpha : 1, xi, uw < -1 ? -1 : (uw > 1 ? 1 : uw));
+                    ? (MIST__W)alpha : 1, xi, uw < -1 ? -1 : (uw > 1 ? 1 : uw),
+                    2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512));
                 if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
             }
         }

@@ -285,9 +285,11 @@ static void test_huge_alpha(void)
  * 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18).  Runs of
  * adjacent doubles and floats, centred on: xi = F(b) of each type (the
  * float128 reference's CDF), 1/2, F(0), the reported xi near 0 and its
- * mirror near 1; and sorted random xi.  Monotone in xi, and the centres
- * and every 256th random xi against the bar (the float128 reference costs
- * ~3 ms a point here: its Newton creeps next to +-1). */
+ * mirror near 1, the reported float pairs (0x1.2117p-1 for g > 0, its
+ * mirror for g < 0: the rounding there erred up to ~5000 floats before
+ * F(b)); and sorted random xi.  Monotone in xi, and the centres and every
+ * 256th random xi against the bar (the float128 reference costs ~3 ms a
+ * point here: its Newton creeps next to +-1). */
 static void near_one_run(double g, double a, double x, int n, int *bad_d, int *bad_f)
 {
     double prev = -2;
@@ -323,15 +325,16 @@ static void test_near_one(void)
                 float gf = (float)g, prevf = -2;
                 qreal qa = a > 1e308 ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
                 qreal qaf = a > 1e308 ? qa : (qreal)(float)a;
-                double cs[6];
+                double cs[7];
                 cs[0] = (double)ref_cdf(g, qa, s * (1 - (qreal)0x1p-54));
                 cs[1] = (double)ref_cdf(gf, qaf, s * (1 - (qreal)0x1p-25));
                 cs[2] = 0.5;
                 cs[3] = (double)ref_cdf(g, qa, 0);
                 cs[4] = 0x1.0fe683p-18;
                 cs[5] = 1 - 0x1.0fe683p-18;
+                cs[6] = s > 0 ? 0x1.2117p-1 : 1 - 0x1.2117p-1;
                 bad_d = bad_f = 0;
-                for (c = 0; c < 6; ++c) near_one_run(g, a, cs[c], run, &bad_d, &bad_f);
+                for (c = 0; c < 7; ++c) near_one_run(g, a, cs[c], run, &bad_d, &bad_f);
                 for (k = 0; k < n; ++k) {
                     double u = sample_d(KIND_DRAINE, g, a, xs[k]);
                     float uf = sample_f(KIND_DRAINE, gf, (float)a, (float)xs[k]);
