@@ -1,6 +1,8 @@
 /* fuzz_phase.c - libFuzzer harness for the phase functions of mist.h:
  * mist_{hg,cs,draine,rayleigh}_{eval,sample}, mist_fog_{make,eval,sample}
- * and mist_fog_from_diameter, double and float, against the invariants of
+ * and mist_fog_from_diameter, and on the same inputs the prepared
+ * mist_phase_* and the batch mist_*_eval_n / _sample_n forms, double and
+ * float, against the invariants of
  * tests/mist_inv.h (a violation prints the inputs and aborts).
  *
  * The input is a sequence of records: one byte picks the function (bits
@@ -48,6 +50,17 @@
             mi_fog_eval_##S(f, mi_draw_##S(s, MI_U));                                  \
             mi_fog_sample_##S(f, x);                                                   \
             break;                                                                     \
+        }                                                                              \
+        {   /* the prepared (mist_phase_*) and batch (mist_*_n) forms on the same   */ \
+            /* inputs, so every record checks them too (no further bytes drawn)    */ \
+            static const int pk[11] = { 0, 2, 1, 3, 0, 2, 1, 3, 4, 4, 4 };            \
+            T in[2];                                                                   \
+            V3 wi;                                                                     \
+            in[0] = x; in[1] = x2;                                                     \
+            wi.x = (T)0.48; wi.y = (T)-0.6; wi.z = (T)0.64;                            \
+            if (op < 8) { f.g_hg = g; f.g_d = g; f.alpha = a; f.w_d = 1; }             \
+            mi_phase_##S(pk[op], g, a, f, in, in, 2, wi, x2);                          \
+            if (op < 8) mi_batch_##S(g, a, in, 2);                                     \
         }                                                                              \
     }
 
