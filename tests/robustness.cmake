@@ -29,7 +29,7 @@ target_include_directories(test_stress PRIVATE tests)
 add_test(NAME stress COMMAND test_stress)
 set_tests_properties(stress PROPERTIES COST 60)      # long: start it early
 
-set(_harnesses phase dir hfog)
+set(_harnesses phase dir hfog mie)   # mie: include/mist_mie.h
 if(UNIX)   # fuzz/replay.c lists directories with <dirent.h>
   foreach(h ${_harnesses})
     mist_program(replay_${h} fuzz/fuzz_${h}.c fuzz/replay.c)
@@ -49,7 +49,8 @@ endif()
 # the new sources under both compilers (tests/compile/compile_check.sh
 # skips a missing compiler)
 foreach(cc gcc clang)
-  foreach(s tests/test_stress.c fuzz/fuzz_phase.c fuzz/fuzz_dir.c fuzz/fuzz_hfog.c fuzz/replay.c)
+  foreach(s tests/test_stress.c fuzz/fuzz_phase.c fuzz/fuzz_dir.c fuzz/fuzz_hfog.c fuzz/fuzz_mie.c
+              fuzz/replay.c)
     get_filename_component(_n ${s} NAME_WE)
     add_test(NAME compile_${cc}_${_n}
              COMMAND sh ${_src}/tests/compile/compile_check.sh ${cc} -std=c99 ${MIST_WARNINGS}
