@@ -24,4 +24,22 @@ static int fz_abort(void)
     }
     return !(env || fz_continue);
 }
+/* The libFuzzer entry point of the phase, dir and hfog harnesses: the input
+ * is a sequence of records, each a selector byte and the words the harness
+ * draws through mi_src (missing bytes read as 0); each harness defines
+ * fz_record, which handles one record.  (fuzz_mie.c reads its own format.) */
+#ifndef FZ_OWN_ENTRY
+static void fz_record(mi_src *s, unsigned sel);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    mi_bytes b;
+    mi_src s;
+    b.p = data; b.n = size; b.i = 0;
+    s.rng = NULL; s.bytes = &b;
+    mi_abort_on_fail = fz_abort();
+    while (b.i < b.n) fz_record(&s, data[b.i++]);
+    return 0;
+}
+#endif
 #endif

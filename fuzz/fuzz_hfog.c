@@ -108,25 +108,16 @@
 FZ_PASS(double, d, mist_vec3, mist_hfog, mist_rgb, 8)
 FZ_PASS(float, f, mist_vec3f, mist_hfogf, mist_rgbf, 4)
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+/* one record: the selector byte picks the function, the type and raw input */
+static void fz_record(mi_src *s, unsigned sel)
 {
-    mi_bytes b;
-    mi_src s;
-    b.p = data; b.n = size; b.i = 0;
-    s.rng = NULL; s.bytes = &b;
-    mi_abort_on_fail = fz_abort();
-    while (b.i < b.n) {
-        unsigned sel = data[b.i++];
-        int op = (sel >> 2) % 3, direct = (sel >> 1) & 1 && !MI_FAST;
-        if (op) {
-            if (sel & 1) fz_more_f(&s, op, direct);
-            else fz_more_d(&s, op, direct);
-        } else if (sel & 1) {
-            fz_hfog_f(&s, direct);
-        } else {
-            fz_hfog_d(&s, direct);
-        }
+    int op = (sel >> 2) % 3, direct = (sel >> 1) & 1 && !MI_FAST;
+    if (op) {
+        if (sel & 1) fz_more_f(s, op, direct);
+        else fz_more_d(s, op, direct);
+    } else if (sel & 1) {
+        fz_hfog_f(s, direct);
+    } else {
+        fz_hfog_d(s, direct);
     }
-    return 0;
 }

@@ -28,6 +28,7 @@
  * or without libFuzzer, replaying files: fuzz/replay.c. */
 #include "mist_inv.h"
 #include "mist_mie.h"
+#define FZ_OWN_ENTRY     /* its own record format */
 #include "fuzz_common.h"
 
 #define X_CAP  2000.0
