@@ -237,7 +237,7 @@ static void fz_op_average(mi_bytes *b)
     mist_mie_wavelength wl[3];
     mist_mie_dist d;
     mist_mie_avg a;
-    int valid = 1, pec;
+    int valid = 1, pec, wpos = 0, wzero = 0;
     /* the radii keep x = 2 pi n_medium r / lambda <= X_CAP at lambda >= 0.35 */
     rcap = X_CAP * 0.35 / (2 * MIST_MIE__PI * 1.5);
     for (l = 0; l < n_wl; ++l) {
@@ -246,27 +246,9 @@ static void fz_op_average(mi_bytes *b)
                                             : mist_mie_cplx(fz_num(b, 1.01, 3), fz_num(b, 0, 1));
         wl[l] = mist_mie_wl(lam, wt, m);
         if (fz_fin(lam) && lam > 0 && lam < 0.35) return;                /* x cap */
-        /* KNOWN BUG (mist_mie_average, not fixed here): a huge wavelength (valid:
-         * lambda > 0, finite) gives phase[] = NaN for finite valid input.  Found by
-         * this harness: gamma r_eff 0.1, v_eff 0.01, r in [0.001, 0.002], n_radii 1,
-         * wavelengths (1e300, weight 0.01, m 1.329 + 1.25e-7 i) and a normal one,
-         * n_medium 1.02, mu = -1: phase NaN (C_sca 1.1e-12).  The phase scale
-         * ww amp_scale_^2 / (2 k^2) is 0 / 0: x^3 and k^2 both underflow.  Skipped
-         * until fixed: wavelengths past 1e100 (x below 1e-100 at these radii). */
-        if (fz_fin(lam) && lam > 1e100) return;
-        /* KNOWN BUG 2 (mist_mie_average): a tiny positive weight (valid: finite,
-         * >= 0) underflows the weighted sums: modified gamma alpha 0.5, gamma 0.5,
-         * r_c 0.1, r in [0.001, 0.002], 8 radii, one wavelength 0.532 of weight
-         * 5.1e-315 (subnormal), m 1.01, n_medium 1.217: status OK with C_ext = C_sca
-         * = area = volume = 0 (the weights are normalised away only in theory).
-         * Huge weights overflow them (KNOWN BUG 3): one wavelength 0.798 of weight
-         * 1.9e214, m 1.329 + 1.26e-7 i, n_medium 1.18, a table of 6 radii, the
-         * first 74.3 with weight 3.9e137, the second 2.6 with weight 0: status OK
-         * with C_ext, C_sca, g, albedo all NaN (w w_l overflows: inf / inf).
-         * Skipped until fixed: weights in (0, 1e-100) or above 1e100, here and in
-         * tables. */
-        if (wt > 0 && (wt < 1e-100 || wt > 1e100)) return;
-        if (!(lam > 0 && fz_fin(lam) && wt >= 0 && fz_fin(wt)
+        /* lengths inside [MIST_MIE_LEN_MIN, MIST_MIE_LEN_MAX]; weights of any
+         * scale (they are normalised: subnormal and 1e300 allowed) */
+        if (!(lam >= MIST_MIE_LEN_MIN && lam <= MIST_MIE_LEN_MAX && wt >= 0 && fz_fin(wt)
               && fz_valid(1e-3, mist_mie_cplx(m.re / n_med, m.im / n_med), &pec)))
             valid = 0;                             /* a bad draw: must be refused */
         wsum += wt;
@@ -289,10 +271,12 @@ static void fz_op_average(mi_bytes *b)
         for (i = 0; i < nn; ++i) { r[i] = fz_num(b, 1e-4, rcap); w[i] = fz_num(b, 0.01, 1); }
         d = mist_mie_dist_table(r, w, nn);
         for (i = 0; i < nn; ++i) {
-            if (w[i] > 0 && (w[i] < 1e-100 || w[i] > 1e100)) return;   /* KNOWN BUGS 2, 3 */
-            if (!(r[i] > 0 && r[i] <= rcap && w[i] >= 0 && fz_fin(w[i]))) valid = 0;
+            if (!(r[i] >= MIST_MIE_LEN_MIN && r[i] <= rcap && w[i] >= 0 && fz_fin(w[i])))
+                valid = 0;
+            if (w[i] > 0) wpos = 1;
         }
         if (valid && (int)(sel >> 15) % 2) for (i = 0; i < nn; ++i) w[i] = 0;   /* sum 0 */
+        if (valid && !wpos) wzero = 1;            /* every drawn weight 0: EDOMAIN */
         if (!valid) for (i = 0; i < nn; ++i) if (fz_fin(r[i]) && r[i] > rcap) return;
         break;
     }
@@ -303,22 +287,19 @@ static void fz_op_average(mi_bytes *b)
         d.r_max = d.r_min + fz_num(b, 1e-3, rcap - 1);
         d.n_radii = (int)(mi_take(b, 1) % N_CAP) + 1;
         if (!(d.r_min > 0) && !mi_nan_d(d.r_min)) return;   /* r_min <= 0: not documented */
-        /* KNOWN BUG 4 (mist_mie_average): a huge law parameter (valid: > 0, finite)
-         * with an explicit range: gamma r_eff 1e300, v_eff 0.335, n_medium 1.0,
-         * one wavelength: status OK with C_ext, C_sca, albedo NaN.  Skipped until
-         * fixed: parameters above 1e100. */
-        if ((fz_fin(d.p1) && d.p1 > 1e100) || (fz_fin(d.p2) && d.p2 > 1e100)
-            || (fz_fin(d.p3) && d.p3 > 1e100))
-            return;
         if (!(d.p1 > 0 && fz_fin(d.p1) && d.p2 > 0 && fz_fin(d.p2))) valid = 0;
-        if (d.kind == MIST_MIE_DIST_MODGAMMA && !(d.p3 > 0 && fz_fin(d.p3))) valid = 0;
+        if (d.kind == MIST_MIE_DIST_MODGAMMA
+            && !(d.p3 >= MIST_MIE_LEN_MIN && d.p3 <= MIST_MIE_LEN_MAX)) valid = 0;
+        if (d.kind != MIST_MIE_DIST_MODGAMMA
+            && !(d.p1 >= MIST_MIE_LEN_MIN && d.p1 <= MIST_MIE_LEN_MAX)) valid = 0;
         if (d.kind == MIST_MIE_DIST_GAMMA && !(d.p2 < 0.5)) valid = 0;
         if (d.kind == MIST_MIE_DIST_LOGNORMAL && !(d.p2 > 1)) valid = 0;
-        if (!(d.r_min > 0 && d.r_max > d.r_min && d.r_max <= rcap)) {
+        if (!(d.r_min >= MIST_MIE_LEN_MIN && d.r_max > d.r_min && d.r_max <= rcap)) {
             if (fz_fin(d.r_max) && d.r_max > rcap) return;
             valid = 0;
         }
-    } else if (d.kind == MIST_MIE_DIST_MONO && !(d.p1 > 0 && fz_fin(d.p1) && d.p1 <= rcap)) {
+    } else if (d.kind == MIST_MIE_DIST_MONO
+               && !(d.p1 >= MIST_MIE_LEN_MIN && d.p1 <= rcap)) {
         if (fz_fin(d.p1) && d.p1 > rcap) return;
         valid = 0;
     }
@@ -332,19 +313,14 @@ static void fz_op_average(mi_bytes *b)
     a = mist_mie_average(bad == 0 && (sel >> 14) % 8 == 0 ? NULL : &d, bad == 2 ? NULL : wl,
                          n_wl, n_med, mu, n_mu, bad == 3 ? NULL : ph);
     if (bad == 0 && (sel >> 14) % 8 == 0) valid = 0;
-    if (valid && d.kind == MIST_MIE_DIST_TABLE && w[0] == 0 && (int)(sel >> 15) % 2) valid = -1;
+    if (valid && d.kind == MIST_MIE_DIST_TABLE && (wzero || (w[0] == 0 && (int)(sel >> 15) % 2)))
+        valid = -1;
     if (valid > 0) {
         /* a node of zero weight is skipped: gamma with r_min past its mass may leave
          * none, EDOMAIN then (sw = 0); modified gamma likewise */
         if (a.status == MIST_MIE_EDOMAIN && d.kind != MIST_MIE_DIST_MONO
             && d.kind != MIST_MIE_DIST_TABLE)
             return;
-        /* KNOWN BUG 2 again: a range far in a law's tail (gamma r_eff 10, v_eff 0.01,
-         * r_max 2e-3) gives node weights so small that the sums underflow: status OK,
-         * every number 0 (or area right, C_ext and volume 0: gamma r_eff 9.5, v_eff
-         * 0.01, r in [0.001, 0.002], lambda 0.795, n_medium 1.495).  Skipped: OK with
-         * area or volume 0. */
-        if (a.status == MIST_MIE_OK && (a.area == 0 || a.volume == 0)) return;
         if (a.status != MIST_MIE_OK
             || !(fz_fin(a.c_ext) && fz_fin(a.c_sca) && fz_fin(a.c_abs) && fz_fin(a.c_back)
                  && fz_fin(a.g) && a.c_ext >= 0 && a.c_sca >= 0 && a.c_abs >= 0 && a.c_back >= 0

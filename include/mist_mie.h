@@ -66,6 +66,9 @@
  *        = +INFINITY) is the perfectly conducting sphere (mist_mie_conductor).
  *        m = 1 is valid: nothing scatters (Q = 0, p = 0 everywhere).
  *   mu   in [-1, 1]; clamped; NaN gives amplitudes 0 and density 0.
+ *   mist_mie_average: lengths (wavelengths, radii, in one unit of your
+ *        choice) in [MIST_MIE_LEN_MIN, MIST_MIE_LEN_MAX] = [1e-30, 1e30],
+ *        weights finite >= 0 of any scale; see there.
  *   Bad x or m: the sphere has status MIST_MIE_EDOMAIN and every number in
  *   it is 0; every function given such a sphere returns 0.  Finite valid
  *   input never gives NaN or infinity.  No function ever reads or writes
@@ -139,6 +142,8 @@ extern "C" {
 #define MIST_MIE_M_MAX    1e6   /* largest finite |m|                          */
 #define MIST_MIE_MX_MAX   1e7   /* largest |m| x (the continued fraction costs
                                    about |m| x steps)                          */
+#define MIST_MIE_LEN_MIN  1e-30 /* mist_mie_average: the lengths (wavelengths,  */
+#define MIST_MIE_LEN_MAX  1e30  /* radii, law radii) lie in [LEN_MIN, LEN_MAX]  */
 
 /* size distributions, see mist_mie_dist_* */
 #define MIST_MIE_DIST_MONO      0
@@ -863,6 +868,10 @@ MIST_MIE_FUNC mist_mie_dist mist_mie_dist_table(const double *r, const double *w
 
 MIST_MIE_FUNC int mist_mie__finite(double v) { return v - v == 0; }
 
+/* a length inside mist_mie_average's domain (also false for NaN) */
+MIST_MIE_FUNC int mist_mie__len(double v)
+{ return v >= MIST_MIE_LEN_MIN && v <= MIST_MIE_LEN_MAX; }
+
 /* Checks the parameters and sets the integration variable t (r, or ln r
  * for the lognormal: *logv) and its range [*t0, *t1]. */
 MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, double *t1,
@@ -871,12 +880,12 @@ MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, doubl
     double a, b, lo, hi;
     int autor = d->r_min == 0 && d->r_max == 0;
     *logv = 0;
-    if (!autor && !(mist_mie__finite(d->r_min) && mist_mie__finite(d->r_max)
-                    && d->r_min >= 0 && d->r_max > d->r_min))
+    if (!autor && !((d->r_min == 0 || mist_mie__len(d->r_min)) && mist_mie__len(d->r_max)
+                    && d->r_max > d->r_min))
         return 0;
     switch (d->kind) {
     case MIST_MIE_DIST_GAMMA:       /* alpha = (1-3v)/v, scale beta = r_eff v */
-        if (!(d->p1 > 0 && mist_mie__finite(d->p1) && d->p2 > 0 && d->p2 < 0.5)) return 0;
+        if (!(mist_mie__len(d->p1) && d->p2 > 0 && d->p2 < 0.5)) return 0;
         a = (1 - 3 * d->p2) / d->p2;  b = d->p1 * d->p2;
         lo = a + 1 - 8 * sqrt(a + 1) - 16;         /* number: Gamma(alpha+1) */
         hi = a + 3 + 8 * sqrt(a + 3) + 16;         /* area:   Gamma(alpha+3) */
@@ -885,7 +894,8 @@ MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, doubl
     case MIST_MIE_DIST_MODGAMMA: {  /* t = B r^gamma, B = alpha/(gamma r_c^gamma) */
         double g = d->p2, bb, s0, s1;
         if (!(d->p1 > 0 && mist_mie__finite(d->p1) && g > 0 && mist_mie__finite(g)
-              && d->p3 > 0 && mist_mie__finite(d->p3))) return 0;
+              && mist_mie__len(d->p3))) return 0;
+        if (!autor) break;                          /* (may overflow: not needed) */
         bb = d->p1 / g;                             /* B r_c^gamma */
         s0 = (d->p1 + 1) / g;  s1 = (d->p1 + 3) / g;
         lo = s0 - 8 * sqrt(s0) - 16;  hi = s1 + 8 * sqrt(s1) + 16;
@@ -896,8 +906,7 @@ MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, doubl
     }
     case MIST_MIE_DIST_LOGNORMAL: { /* in ln r: Gaussian (mu, s) */
         double mu = log(d->p1), s;
-        if (!(d->p1 > 0 && mist_mie__finite(d->p1) && d->p2 > 1 && mist_mie__finite(d->p2)))
-            return 0;
+        if (!(mist_mie__len(d->p1) && d->p2 > 1 && mist_mie__finite(d->p2))) return 0;
         s = log(d->p2);
         *logv = 1;
         *t0 = mu - 7 * s;  *t1 = mu + 2 * s * s + 7 * s;
@@ -914,33 +923,71 @@ MIST_MIE_FUNC int mist_mie__dist_range(const mist_mie_dist *d, double *t0, doubl
     return mist_mie__finite(*t0) && mist_mie__finite(*t1) && *t1 > *t0;
 }
 
-/* Density in the integration variable at t (r = t, or e^t), relative to
- * its peak (so it never overflows); 0 at r = 0. */
-MIST_MIE_FUNC double mist_mie__dist_density(const mist_mie_dist *d, double t)
+/* The log of the density in the integration variable at t (r = t, or
+ * e^t), up to a constant (the nodes' weights are normalised by their
+ * largest); -inf where it underflows every double (or at r = 0).  Written
+ * so that no term overflows alone (the printed forms give inf - inf for
+ * narrow laws and far tails):
+ *  gamma, alpha > 0: alpha (log1p(d) - d), d = r / r_mode - 1 (r_mode =
+ *    alpha beta), which is alpha log(r/r_mode) - (r - r_mode)/beta;
+ *  modified gamma: -alpha L (expm1(u) - u) / u, L = log(r/r_c), u =
+ *    gamma L, which is alpha L - (alpha/gamma)(q^gamma - 1) without
+ *    alpha/gamma;
+ *  lognormal: -y^2/2.
+ * The differences log1p(d) - d and expm1(u) - u cancel for small d, u
+ * (a narrow gamma law; a modified gamma with gamma -> 0, where the law
+ * tends to a lognormal): their Taylor series there. */
+MIST_MIE_FUNC double mist_mie__log1pm(double d)      /* log1p(d) - d */
+{
+    double s = 0;
+    int k;
+    if (!(fabs(d) < 0.25)) return log1p(d) - d;
+    for (k = 28; k >= 2; --k) s = (k % 2 ? 1.0 : -1.0) / k + d * s;   /* 0.25^27 < 1e-16 */
+    return d * d * s;
+}
+
+MIST_MIE_FUNC double mist_mie__expm1m(double u)      /* (expm1(u) - u) / u */
+{
+    double s = 0, f = 1;
+    int k;
+    if (!(fabs(u) < 0.5)) return (expm1(u) - u) / u;
+    for (k = 2; k <= 17; ++k) f *= k;                 /* 17! */
+    for (k = 16; k >= 1; --k) { s = 1 / f + u * s; f /= k + 1; }   /* u^k/(k+1)! */
+    return u * s;
+}
+
+MIST_MIE_FUNC double mist_mie__dist_logdensity(const mist_mie_dist *d, double t)
 {
     double r = t, e;
     switch (d->kind) {
     case MIST_MIE_DIST_GAMMA: {
-        double a = (1 - 3 * d->p2) / d->p2, b = d->p1 * d->p2;
-        double rm = b * (a > 0 ? a : 1);           /* the mode, if any */
-        if (!(r > 0)) return 0;
-        e = a * log(r / rm) - (r - rm) / b;        /* log n(r) / n(rm) */
-        return exp(e);
+        double a = (1 - 3 * d->p2) / d->p2, b = d->p1 * d->p2, dd;
+        if (!(r > 0)) return -(double)INFINITY;
+        if (a > 0) {
+            dd = r / (a * b) - 1;
+            e = a * mist_mie__log1pm(dd);
+        } else {                                   /* -1 < alpha <= 0: decreasing */
+            e = a * log(r / b) - r / b;
+        }
+        break;
     }
     case MIST_MIE_DIST_MODGAMMA: {
-        double al = d->p1, g = d->p2, q;
-        if (!(r > 0)) return 0;
-        q = r / d->p3;
-        e = al * log(q) - al / g * (pow(q, g) - 1);
-        return exp(e);
+        double L, u;
+        if (!(r > 0)) return -(double)INFINITY;
+        L = log(r / d->p3);  u = d->p2 * L;
+        if (u > 700) return -(double)INFINITY;    /* exp(-(alpha/gamma) e^u) */
+        e = -d->p1 * (L * mist_mie__expm1m(u));
+        break;
     }
     case MIST_MIE_DIST_LOGNORMAL: {
-        double s = log(d->p2), y = (t - log(d->p1)) / s;
-        return exp(-0.5 * y * y);
+        double y = (t - log(d->p1)) / log(d->p2);
+        e = -0.5 * y * y;
+        break;
     }
     default:
-        return 0;
+        return -(double)INFINITY;
     }
+    return e == e ? e : -(double)INFINITY;
 }
 
 /* ======================================================================== */
@@ -985,10 +1032,11 @@ MIST_MIE_FUNC mist_mie_avg mist_mie__avg_zero(int status)
     return a;
 }
 
-/* Node i of the size quadrature: radius *r and weight *w (density times
- * quadrature weight). */
-MIST_MIE_FUNC void mist_mie__node(const mist_mie_dist *d, int logv, double t0, double h,
-                                  size_t i, double *r, double *w)
+/* Node i of the size quadrature: its radius *r and the log of its weight
+ * (density times Gauss weight; the panel width is common to all and left
+ * out) for the laws; mono and table nodes are read directly. */
+MIST_MIE_FUNC double mist_mie__node(const mist_mie_dist *d, int logv, double t0, double h,
+                                    size_t i, double *r)
 {
     static const double gx[4] = {       /* 8-point Gauss-Legendre, x >= 0 */
         0.1834346424956498049394761, 0.5255324099163289858177390,
@@ -997,14 +1045,11 @@ MIST_MIE_FUNC void mist_mie__node(const mist_mie_dist *d, int logv, double t0, d
         0.3626837833783619829651504, 0.3137066458778872873379622,
         0.2223810344533744705443560, 0.1012285362903762591525314 };
     size_t panel = i / 8, j = i % 8;
-    double c = t0 + h * ((double)panel + 0.5), xi, wi, t;
-    if (d->kind == MIST_MIE_DIST_MONO) { *r = d->p1; *w = 1; return; }
-    if (d->kind == MIST_MIE_DIST_TABLE) { *r = d->r[i]; *w = d->w[i]; return; }
+    double c = t0 + h * ((double)panel + 0.5), xi, t;
     xi = gx[j < 4 ? 3 - j : j - 4] * (j < 4 ? -1 : 1);
-    wi = gw[j < 4 ? 3 - j : j - 4];
     t = c + 0.5 * h * xi;
     *r = logv ? exp(t) : t;
-    *w = 0.5 * h * wi * mist_mie__dist_density(d, t);
+    return log(gw[j < 4 ? 3 - j : j - 4]) + mist_mie__dist_logdensity(d, t);
 }
 
 /* The size- and wavelength-averaged optics of a droplet population.
@@ -1015,18 +1060,35 @@ MIST_MIE_FUNC void mist_mie__node(const mist_mie_dist *d, int logv, double t0, d
  *   mu[n_mu] cosines for the phase table (any; pairs mu[n-1-j] = -mu[j]
  *            cost one evaluation), phase[n_mu] receives p(mu) per sr.
  *            mu/phase may be NULL with n_mu = 0.
- * Domain: every parameter as documented, n_wl >= 1, weights finite >= 0
- * with a positive sum, every x = 2 pi n_medium r / lambda and m / n_medium
- * in the sphere's domain; else status MIST_MIE_EDOMAIN, every number 0 and
- * phase[] zeroed.  Allocates one workspace (malloc, for the largest x);
- * failure: MIST_MIE_ENOMEM.  Nodes with zero weight are skipped. */
+ * Domain: every parameter as documented; the wavelengths and the radii
+ * (mono, table, the laws' r_eff, r_c, r_g, a given r_min (or 0) and r_max,
+ * and the largest radius of an automatic range) in [MIST_MIE_LEN_MIN,
+ * MIST_MIE_LEN_MAX]; n_wl >= 1; weights (wavelengths and table) finite and
+ * >= 0, not all 0, of any scale (subnormal or 1e300: they are normalised
+ * by the largest); every x = 2 pi n_medium r / lambda and m / n_medium in
+ * the sphere's domain.  Else status MIST_MIE_EDOMAIN, every number 0 and
+ * phase[] zeroed; also for a law whose density underflows every double at
+ * every node (a range more than ~e^700 below its peak: no weight left).
+ * Inside the domain every number is finite; C_sca = 0 (m = 1, or so little
+ * scattering that Q_sca r^2 underflows at every node) gives g = 0 and
+ * phase 0.  Allocates one workspace (malloc, for the largest x); failure:
+ * MIST_MIE_ENOMEM.  Nodes with zero weight are skipped.
+ * Scaled sums: weights are divided by the largest, radii by the largest
+ * (rho = r / r_max), and the means are scaled back at the end (e.g.
+ * C_ext = pi r_max^2 <w rho^2 Q_ext> / <w>), so no sum over- or underflows
+ * for input in the domain (the plain sums did: weights of 1e214 gave
+ * inf / inf, a subnormal weight or a range far in a law's tail gave
+ * 0 / 0).  The phase weight |S|^2 / (2 k^2) is taken as r^2 (|S| / x)^2 / 2,
+ * where the dipole limit's stored scale x^3 enters as (x^3 / x)^2 (k^2 and
+ * x^6 both underflowed for huge wavelengths: 0 / 0). */
 MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
                                             const mist_mie_wavelength *wl, size_t n_wl,
                                             double n_medium,
                                             const double *mu, size_t n_mu, double *phase)
 {
     mist_mie_avg a = mist_mie__avg_zero(MIST_MIE_OK);
-    double t0 = 0, t1 = 0, h = 0, lmin = 0, wsum_l = 0, rmax = 0, xmax;
+    double t0 = 0, t1 = 0, h = 0, lmin = 0, wmax_l = 0, wsum_l = 0, rmax = 0, wmax_t = 0;
+    double lwmax = -(double)INFINITY, xmax, r2s;
     double sw = 0, cext = 0, csca = 0, cabs = 0, cback = 0, gs = 0, area = 0, vol = 0;
     size_t nodes = 1, i, l, nwork;
     int logv = 0, ok = 1;
@@ -1039,47 +1101,44 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
     for (l = 0; l < n_wl; ++l) {
         int pec;
         double lam = wl[l].lambda;
-        if (!(lam > 0 && mist_mie__finite(lam) && wl[l].weight >= 0
-              && mist_mie__finite(wl[l].weight)))
+        if (!(mist_mie__len(lam) && wl[l].weight >= 0 && mist_mie__finite(wl[l].weight)))
             return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         if (!mist_mie__valid(1e-3, mist_mie_cplx(wl[l].m.re / n_medium,
                                                  wl[l].m.im / n_medium), &pec))
             return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         if (l == 0 || lam < lmin) lmin = lam;
-        wsum_l += wl[l].weight;
+        if (wl[l].weight > wmax_l) wmax_l = wl[l].weight;
     }
-    if (!(wsum_l > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+    if (!(wmax_l > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+    for (l = 0; l < n_wl; ++l) wsum_l += wl[l].weight / wmax_l;
 
     /* the nodes */
     switch (dist->kind) {
     case MIST_MIE_DIST_MONO:
-        if (!(dist->p1 > 0 && mist_mie__finite(dist->p1)))
-            return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        if (!mist_mie__len(dist->p1)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         rmax = dist->p1;
         a.r_min = a.r_max = rmax;
         break;
-    case MIST_MIE_DIST_TABLE: {
-        double ws = 0;
+    case MIST_MIE_DIST_TABLE:
         if (!dist->r || !dist->w || dist->n == 0) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         for (i = 0; i < dist->n; ++i) {
-            if (!(dist->r[i] > 0 && mist_mie__finite(dist->r[i]) && dist->w[i] >= 0
-                  && mist_mie__finite(dist->w[i])))
+            if (!(mist_mie__len(dist->r[i]) && dist->w[i] >= 0 && mist_mie__finite(dist->w[i])))
                 return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
             if (dist->r[i] > rmax) rmax = dist->r[i];
             if (i == 0 || dist->r[i] < a.r_min) a.r_min = dist->r[i];
-            ws += dist->w[i];
+            if (dist->w[i] > wmax_t) wmax_t = dist->w[i];
         }
-        if (!(ws > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
+        if (!(wmax_t > 0)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         nodes = dist->n;
         a.r_max = rmax;
         break;
-    }
     default: {
-        double r0, span;
+        double r0, span, r;
         if (!mist_mie__dist_range(dist, &t0, &t1, &logv) || dist->n_radii < 0)
             return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         rmax = logv ? exp(t1) : t1;
         r0 = logv ? exp(t0) : t0;
+        if (!mist_mie__len(rmax)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
         if (dist->n_radii > 0) nodes = (size_t)dist->n_radii;
         else {
             /* size-parameter spacing <= 0.05 at the top of the range */
@@ -1090,6 +1149,11 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
         nodes = (nodes + 7) / 8 * 8;
         h = (t1 - t0) / (double)(nodes / 8);
         a.r_min = r0; a.r_max = rmax;
+        for (i = 0; i < nodes; ++i) {          /* the largest weight, for the scale */
+            double lw = mist_mie__node(dist, logv, t0, h, i, &r);
+            if (lw > lwmax) lwmax = lw;
+        }
+        if (!(lwmax > -(double)INFINITY)) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
     }
     }
     a.n_radii = (int)nodes;
@@ -1101,28 +1165,30 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
     if (!work) return mist_mie__avg_zero(MIST_MIE_ENOMEM);
 
     for (i = 0; i < nodes && ok; ++i) {
-        double r, w, r2;
-        mist_mie__node(dist, logv, t0, h, i, &r, &w);
+        double r, w, rho, rho2;
+        if (dist->kind == MIST_MIE_DIST_MONO) { r = dist->p1; w = 1; }
+        else if (dist->kind == MIST_MIE_DIST_TABLE) { r = dist->r[i]; w = dist->w[i] / wmax_t; }
+        else w = exp(mist_mie__node(dist, logv, t0, h, i, &r) - lwmax);
         if (!(w > 0)) continue;
-        r2 = MIST_MIE__PI * r * r;
+        rho = r / rmax;  rho2 = rho * rho;
         sw += w * wsum_l;
-        area += w * wsum_l * r2;
-        vol += w * wsum_l * (4.0 / 3) * r2 * r;
+        area += w * wsum_l * rho2;
+        vol += w * wsum_l * rho2 * rho;
         for (l = 0; l < n_wl; ++l) {
-            double k = 2 * MIST_MIE__PI * n_medium / wl[l].lambda, ww = w * wl[l].weight;
+            double x = 2 * MIST_MIE__PI * n_medium / wl[l].lambda * r, as;
+            double ww = w * (wl[l].weight / wmax_l);
             mist_mie_sphere s;
             if (!(ww > 0)) continue;
-            s = mist_mie_sphere_make(k * r, mist_mie_cplx(wl[l].m.re / n_medium,
-                                                          wl[l].m.im / n_medium), work, nwork);
+            s = mist_mie_sphere_make(x, mist_mie_cplx(wl[l].m.re / n_medium,
+                                                      wl[l].m.im / n_medium), work, nwork);
             if (s.status != MIST_MIE_OK) { ok = 0; a.status = s.status; break; }
-            cext += ww * s.q_ext * r2;
-            csca += ww * s.q_sca * r2;
-            cabs += ww * s.q_abs * r2;
-            cback += ww * s.q_back * r2;
-            gs += ww * s.g * s.q_sca * r2;
-            if (n_mu > 0)
-                mist_mie__table(&s, mu, n_mu,
-                                ww * s.amp_scale_ * s.amp_scale_ / (2 * k * k), 1, phase);
+            cext += ww * s.q_ext * rho2;
+            csca += ww * s.q_sca * rho2;
+            cabs += ww * s.q_abs * rho2;
+            cback += ww * s.q_back * rho2;
+            gs += ww * s.g * s.q_sca * rho2;
+            as = s.amp_scale_ / x;
+            if (n_mu > 0) mist_mie__table(&s, mu, n_mu, ww * rho2 * as * as / 2, 1, phase);
         }
     }
     free(work);
@@ -1131,15 +1197,16 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
         if (phase) for (i = 0; i < n_mu; ++i) phase[i] = 0;
         return mist_mie__avg_zero(st);
     }
-    for (i = 0; i < n_mu; ++i) phase[i] = csca > 0 ? phase[i] / csca : 0;
-    a.c_ext = cext / sw;
-    a.c_sca = csca / sw;
-    a.c_abs = cabs / sw;
-    a.c_back = cback / sw;
+    for (i = 0; i < n_mu; ++i) phase[i] = csca > 0 ? phase[i] / (MIST_MIE__PI * csca) : 0;
+    r2s = MIST_MIE__PI * rmax * rmax;
+    a.c_ext = cext / sw * r2s;
+    a.c_sca = csca / sw * r2s;
+    a.c_abs = cabs / sw * r2s;
+    a.c_back = cback / sw * r2s;
     a.g = csca > 0 ? gs / csca : 0;
     a.albedo = cext > 0 ? csca / cext : 0;
-    a.area = area / sw;
-    a.volume = vol / sw;
+    a.area = area / sw * r2s;
+    a.volume = vol / sw * (4.0 / 3) * r2s * rmax;
     return a;
 }
 

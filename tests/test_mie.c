@@ -883,6 +883,239 @@ static void test_average_phase(void)
 /* transcription (refractiveindex.info's copy of Hale & Querry, as in the   */
 /* GitHub repository joeftiger/Rust-V, src/refractive_index/water.rs; the   */
 /* same numbers as the 6S/LIDORT table), its interpolation and its edges.  */
+
+/* Averages at the edges of their domain (the scaled sums of
+ * mist_mie_average).  Exact invariances: scaling every weight, or every
+ * length, by a power of two scales each rounded operation exactly (no
+ * over- or underflow inside the domain), so the results are equal bit for
+ * bit (lengths: C by 2^2k, volume by 2^3k).  Then four inputs that broke
+ * the plain sums (fuzz/fuzz_mie.c found them: NaN or zero results with
+ * status OK), and moments of extreme laws against closed forms and an
+ * independent long-double Simpson rule. */
+static int same_avg(const mist_mie_avg *a, const mist_mie_avg *b, double c2, double c3)
+{
+    return a->status == MIST_MIE_OK && b->status == MIST_MIE_OK && b->c_ext == a->c_ext * c2
+           && b->c_sca == a->c_sca * c2 && b->c_abs == a->c_abs * c2
+           && b->c_back == a->c_back * c2 && b->g == a->g && b->albedo == a->albedo
+           && b->area == a->area * c2 && b->volume == a->volume * c3
+           && b->n_radii == a->n_radii;
+}
+
+/* <r^k> / <1> of n(r) = exp(alpha ln(r / r1) - (r - r1) / beta) over
+ * [r0, r1]: composite Simpson in long double, 20000 intervals (the
+ * integrand's fourth derivative over itself is below (alpha / r0)^4: the
+ * rule's relative error is below h^4 (alpha / r0)^4 / 180 < 1e-12 for
+ * alpha = 97 on [0.001, 0.002]) */
+static double simpson_moment(double alpha, double beta, double r0, double r1, int k)
+{
+    int i, n = 20000;
+    long double h = ((long double)r1 - r0) / n, s0 = 0, sk = 0;
+    for (i = 0; i <= n; ++i) {
+        long double r = r0 + h * i;
+        long double f = expl(alpha * logl(r / r1) - (r - r1) / beta);
+        long double c = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        s0 += c * f;
+        sk += c * f * powl(r, k);
+    }
+    return (double)(sk / s0);
+}
+
+static void test_average_extremes(void)
+{
+    enum { NM = 5 };
+    double mu[NM] = {1, 0.5, 0, -0.5, -1}, p[NM], q[NM];
+    mist_mie_wavelength wl[2], w2[2];
+    mist_mie_dist d, e;
+    mist_mie_avg a, b, c;
+    int j, k, ok;
+
+    /* weights of any scale: subnormal (2^-1060) and huge (2^1000) */
+    wl[0] = mist_mie_wl(0.45, 1, mist_mie_water(450, NULL));
+    wl[1] = mist_mie_wl(0.65, 3, mist_mie_water(650, NULL));
+    d = mist_mie_dist_gamma(5, 0.2);
+    d.r_min = 0.01; d.r_max = 16; d.n_radii = 64;
+    a = mist_mie_average(&d, wl, 2, 1.0, mu, NM, p);
+    for (k = 0; k < 2; ++k) {
+        double sc = k ? 0x1p1000 : 0x1p-1060;
+        static const double rr[2] = {1, 2.5};
+        double tw[2], tw2[2];
+        w2[0] = wl[0]; w2[1] = wl[1];
+        w2[0].weight *= sc; w2[1].weight *= sc;
+        b = mist_mie_average(&d, w2, 2, 1.0, mu, NM, q);
+        ok = same_avg(&a, &b, 1, 1);
+        for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
+        mt_check(ok, "average: wavelength weights x %a: status %d, C_sca %.17g vs %.17g", sc,
+                 b.status, b.c_sca, a.c_sca);
+        tw[0] = 2; tw[1] = 1; tw2[0] = 2 * sc; tw2[1] = sc;
+        e = mist_mie_dist_table(rr, tw, 2);
+        b = mist_mie_average(&e, wl, 2, 1.0, mu, NM, p);
+        e = mist_mie_dist_table(rr, tw2, 2);
+        c = mist_mie_average(&e, wl, 2, 1.0, mu, NM, q);
+        ok = same_avg(&b, &c, 1, 1);
+        for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
+        mt_check(ok, "average: table weights x %a", sc);
+        a = mist_mie_average(&d, wl, 2, 1.0, mu, NM, p);       /* restore p */
+    }
+
+    /* lengths of any scale inside [LEN_MIN, LEN_MAX]: 2^-90 (radii down to
+     * 7.9e-30) and 2^90 (up to 2e28) */
+    for (k = -90; k <= 90; k += 180) {
+        double sc = ldexp(1, k);
+        w2[0] = wl[0]; w2[1] = wl[1];
+        w2[0].lambda *= sc; w2[1].lambda *= sc;
+        e = mist_mie_dist_gamma(5 * sc, 0.2);
+        e.r_min = 0.01 * sc; e.r_max = 16 * sc; e.n_radii = 64;
+        b = mist_mie_average(&e, w2, 2, 1.0, mu, NM, q);
+        ok = same_avg(&a, &b, sc * sc, sc * sc * sc);
+        for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
+        mt_check(ok, "average: lengths x 2^%d: status %d, C_sca %.17g vs %.17g", k, b.status,
+                 b.c_sca, a.c_sca * sc * sc);
+    }
+
+    /* (1) a wavelength of LEN_MAX next to a visible one (x ~ 1e-33: the
+     * dipole limit, whose x^6 and k^2 both underflowed: phase 0/0).  Its
+     * scattering is ~x^4 below the other's: the average is the visible
+     * one's, its cross sections times the weight share 1 / (1 + 0.01).
+     * Past LEN_MAX (1e300, the fuzzer's input): EDOMAIN. */
+    d = mist_mie_dist_gamma(0.1, 0.01);
+    d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 1;
+    w2[0] = mist_mie_wl(0.55, 1, mist_mie_cplx(1.329, 1.25e-7));
+    w2[1] = mist_mie_wl(MIST_MIE_LEN_MAX, 0.01, mist_mie_cplx(1.329, 1.25e-7));
+    b = mist_mie_average(&d, w2, 1, 1.02, mu, NM, p);
+    c = mist_mie_average(&d, w2, 2, 1.02, mu, NM, q);
+    ok = c.status == MIST_MIE_OK && near_rel(c.c_sca, b.c_sca / 1.01, 1e-14)
+         && near_rel(c.g, b.g, 1e-14);
+    for (j = 0; j < NM; ++j) ok = ok && near_rel(q[j], p[j], 1e-14);
+    mt_check(ok, "average: wavelength LEN_MAX: status %d C_sca %g vs %g, phase(-1) %g vs %g",
+             c.status, c.c_sca, b.c_sca / 1.01, q[NM - 1], p[NM - 1]);
+    w2[1].lambda = 1e300;
+    c = mist_mie_average(&d, w2, 2, 1.02, mu, NM, q);
+    mt_check(c.status == MIST_MIE_EDOMAIN && q[0] == 0, "average: wavelength 1e300: status %d",
+             c.status);
+
+    /* (2) a subnormal wavelength weight (5.1e-315): the same as weight 1 */
+    d = mist_mie_dist_modgamma(0.5, 0.5, 0.1);
+    d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 8;
+    w2[0] = mist_mie_wl(0.532, 1, mist_mie_cplx(1.01, 0));
+    b = mist_mie_average(&d, w2, 1, 1.217, mu, NM, p);
+    w2[0].weight = 5.1e-315;
+    c = mist_mie_average(&d, w2, 1, 1.217, mu, NM, q);
+    ok = same_avg(&b, &c, 1, 1) && c.area > 0 && c.c_sca > 0;
+    for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
+    mt_check(ok, "average: weight 5.1e-315: status %d C_sca %g area %g (weight 1: %g, %g)",
+             c.status, c.c_sca, c.area, b.c_sca, b.area);
+
+    /* (3) weights 1.9e214 (wavelength) x 3.9e137 (table) overflowed the
+     * products: the same as the one radius alone */
+    {
+        static const double rr[2] = {74.3, 2.6}, tw[2] = {3.9e137, 0};
+        w2[0] = mist_mie_wl(0.798, 1.9e214, mist_mie_cplx(1.329, 1.26e-7));
+        e = mist_mie_dist_table(rr, tw, 2);
+        b = mist_mie_average(&e, w2, 1, 1.18, mu, NM, p);
+        d = mist_mie_dist_mono(74.3);
+        c = mist_mie_average(&d, w2, 1, 1.18, mu, NM, q);
+        ok = b.status == MIST_MIE_OK && near_rel(b.c_ext, c.c_ext, 1e-15)
+             && near_rel(b.c_sca, c.c_sca, 1e-15) && near_rel(b.g, c.g, 1e-15)
+             && near_rel(b.albedo, c.albedo, 1e-15);
+        for (j = 0; j < NM; ++j) ok = ok && near_rel(p[j], q[j], 1e-15);
+        mt_check(ok, "average: weights 1.9e214 x 3.9e137: status %d C_ext %g g %g (mono %g %g)",
+                 b.status, b.c_ext, b.g, c.c_ext, c.g);
+    }
+
+    /* (4) a gamma r_eff of 1e300 (outside [LEN_MIN, LEN_MAX]): EDOMAIN */
+    d = mist_mie_dist_gamma(1e300, 0.335);
+    d.r_min = 0.001; d.r_max = 1; d.n_radii = 8;
+    b = mist_mie_average(&d, wl, 1, 1.0, NULL, 0, NULL);
+    mt_check(b.status == MIST_MIE_EDOMAIN, "average: r_eff 1e300: status %d", b.status);
+
+    /* a range far in a law's tail: gamma r_eff 10, v 0.01 (alpha 97,
+     * beta 0.1, mode 9.7) on [0.001, 0.002], where n(r) is 1e-500 of its
+     * peak (the plain sums gave 0 with status OK).  Area and volume means
+     * against Simpson (1e-12); tolerance 1e-10 (Gauss-Legendre, 8 panels
+     * of 8 nodes, of a smooth integrand: below 1e-13) */
+    d = mist_mie_dist_gamma(10, 0.01);
+    d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 64;
+    w2[0] = mist_mie_wl(0.55, 1, mist_mie_cplx(1.33, 0));
+    a = mist_mie_average(&d, w2, 1, 1, mu, NM, p);
+    e = mist_mie_dist_mono(0.001);
+    b = mist_mie_average(&e, w2, 1, 1, NULL, 0, NULL);
+    e = mist_mie_dist_mono(0.002);
+    c = mist_mie_average(&e, w2, 1, 1, NULL, 0, NULL);
+    {
+        double m2 = simpson_moment(97, 0.1, 0.001, 0.002, 2);
+        double m3 = simpson_moment(97, 0.1, 0.001, 0.002, 3);
+        ok = a.status == MIST_MIE_OK && near_rel(a.area, PI * m2, 1e-10)
+             && near_rel(a.volume, 4.0 / 3 * PI * m3, 1e-10)
+             && a.c_sca > b.c_sca && a.c_sca < c.c_sca && fabs(a.g) <= 1 && p[0] > 0;
+        mt_check(ok, "average: far tail: status %d area %.15g vs %.15g, volume %.15g vs %.15g,"
+                 " C_sca %g in (%g, %g)", a.status, a.area, PI * m2, a.volume,
+                 4.0 / 3 * PI * m3, a.c_sca, b.c_sca, c.c_sca);
+    }
+
+    /* extreme law parameters, moments against closed forms (tolerance
+     * 1e-9: the truncated tails are below 1e-20, Gauss-Legendre of these
+     * smooth integrands below 1e-12, the density's rounding below 1e-12):
+     * a narrow gamma, v = 1e-12 (alpha ~ 1e12): <r^2> = beta^2 (alpha + 1)
+     * (alpha + 2); a modified gamma with gamma = 1e-300, alpha = 1e302
+     * (alpha/gamma overflows; the law is exp(-alpha gamma L^2 / 2) in
+     * L = ln(r/r_c), a Gaussian of variance s2 = 1/(alpha gamma) = 0.01 in
+     * L times dr = r dL): <r^2> = r_c^2 exp(4 s2) */
+    w2[0] = mist_mie_wl(100, 1, mist_mie_cplx(1.33, 0));     /* x < 0.1: cheap */
+    {
+        double v = 1e-12, al = (1 - 3 * v) / v, be = 1 * v, s2;
+        d = mist_mie_dist_gamma(1, v);
+        a = mist_mie_average(&d, w2, 1, 1, NULL, 0, NULL);
+        mt_check(a.status == MIST_MIE_OK
+                 && near_rel(a.area, PI * be * be * (al + 1) * (al + 2), 1e-9),
+                 "average: gamma v 1e-12: status %d area %.15g vs %.15g", a.status, a.area,
+                 PI * be * be * (al + 1) * (al + 2));
+        d = mist_mie_dist_modgamma(1e302, 1e-300, 1);
+        s2 = 1 / (1e302 * 1e-300);
+        d.r_min = exp(-12 * sqrt(s2)); d.r_max = exp(12 * sqrt(s2)); d.n_radii = 256;
+        a = mist_mie_average(&d, w2, 1, 1, NULL, 0, NULL);
+        mt_check(a.status == MIST_MIE_OK && near_rel(a.area, PI * exp(4 * s2), 1e-9),
+                 "average: modified gamma alpha 1e302, gamma 1e-300: status %d area %.15g vs "
+                 "%.15g", a.status, a.area, PI * exp(4 * s2));
+    }
+
+    /* the length domain's edges, each on its own: in, and one ulp out */
+    for (k = 0; k < 4; ++k) {
+        double edge = k < 2 ? MIST_MIE_LEN_MIN : MIST_MIE_LEN_MAX;
+        double out = nextafter(edge, k < 2 ? 0 : INFINITY), in[2];
+        int i;
+        in[0] = edge; in[1] = out;
+        for (i = 0; i < 2; ++i) {
+            int want = i == 0 ? MIST_MIE_OK : MIST_MIE_EDOMAIN;
+            double r1 = in[i], tw = 1;
+            w2[0] = mist_mie_wl(k % 2 ? in[i] : (k < 2 ? 1e-29 : 1e29), 1, mist_mie_cplx(1.33, 0));
+            if (k % 2 == 0) r1 = in[i]; else r1 = k < 2 ? 1e-30 : 1e30;
+            /* k even: the radius at the edge (mono and table), odd: the
+             * wavelength (with a radius inside) */
+            d = mist_mie_dist_mono(r1);
+            a = mist_mie_average(&d, w2, 1, 1, mu, NM, p);
+            e = mist_mie_dist_table(&r1, &tw, 1);
+            b = mist_mie_average(&e, w2, 1, 1, NULL, 0, NULL);
+            ok = a.status == want && b.status == want
+                 && (want != MIST_MIE_OK || (a.c_sca > 0 && a.area > 0 && a.volume > 0
+                                            && p[0] > 0 && b.c_sca == a.c_sca));
+            mt_check(ok, "average: %s %a: status %d/%d (want %d), C_sca %g, volume %g",
+                     k % 2 ? "wavelength" : "radius", in[i], a.status, b.status, want, a.c_sca,
+                     a.volume);
+        }
+    }
+    /* a law whose automatic range ends past LEN_MAX: EDOMAIN; one at LEN_MIN: fine */
+    d = mist_mie_dist_gamma(MIST_MIE_LEN_MAX, 0.1);
+    w2[0] = mist_mie_wl(1e29, 1, mist_mie_cplx(1.33, 0));
+    a = mist_mie_average(&d, w2, 1, 1, NULL, 0, NULL);
+    mt_check(a.status == MIST_MIE_EDOMAIN, "average: gamma r_eff LEN_MAX auto: status %d",
+             a.status);
+    d = mist_mie_dist_gamma(MIST_MIE_LEN_MIN, 0.1);
+    w2[0] = mist_mie_wl(1e-29, 1, mist_mie_cplx(1.33, 0));
+    a = mist_mie_average(&d, w2, 1, 1, NULL, 0, NULL);
+    mt_check(a.status == MIST_MIE_OK && a.c_sca > 0 && a.volume > 0,
+             "average: gamma r_eff LEN_MIN: status %d", a.status);
+}
+
 /* ======================================================================== */
 
 static void test_water(void)
@@ -1150,6 +1383,7 @@ int main(void)
     test_large();
     test_distributions();
     test_average_phase();
+    test_average_extremes();
     test_water();
     test_bad_input();
     test_sweep();
