@@ -474,7 +474,9 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #endif
 #define MIST__W      double
 #define MIST__WFN(n) n
+#define MIST__W_EXACT 1   /* products of two T, and 1 - xi, exact in W */
 #include "mist.h"
+#undef MIST__W_EXACT
 #undef MIST__T
 #undef MIST__FN
 #undef MIST__M
@@ -582,9 +584,11 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* terms are O(D^2), so its cancellation near u = 0 costs no more than the  */
 /* rounding of xi itself.  g < 0 by the mirror image u(g,xi) = -u(-g,1-xi). */
 /* Measured against a float128 inversion this is within 1.1x the bar of     */
-/* tests/test_accuracy.c in T; the public functions therefore evaluate it   */
-/* in the wider type (long double for double, double for float: a dozen     */
-/* operations) and are correctly rounded in practice (0.25x the bar).       */
+/* tests/test_accuracy.c in T; the double functions therefore evaluate it   */
+/* in long double (correctly rounded in practice: 0.25x the bar).  The      */
+/* float functions need less: in double one form, 1 - nb/D^2, is accurate   */
+/* enough everywhere (mist__hg_one: one division, no branch, vectorisable;  */
+/* measured 0.125x the float bar).                                          */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -632,6 +636,27 @@ MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
 
+/* ONE FORM, for the float samplers, evaluated in double: u = 1 - nb/D^2
+ * for g in [0, 1), x = xi, y = 1 - xi.  With float g and xi every input
+ * term is exact in double (1 - g, 1 - xi, g xi, (1 - g)^2: products of two
+ * 24-bit numbers) and every sum adds non-negative terms, so nb and D^2
+ * carry a few double roundings and u an absolute error of ~1e-15 (the
+ * cancellation of 1 - q costs nothing in absolute terms).  The float bar
+ * (tests/test_accuracy.c) is never below ~1e-10 in absolute terms: 4 ulp
+ * of u* where |u*| > 1e-3, and near u* = 0 its xi term, 4 eps_f xi du/dxi
+ * >= 1e-7 (xi du/dxi = F(u)/(2 pi p(u)) is 0.5 to 1 there for g >= 0).
+ * So one division and no branch on the form: the cost of eq. 3 in float
+ * (two divisions), and vectorisable as it stands.  No clamp: u <= 1
+ * (nb/D^2 >= 0) and u >= -1 - 1e-15, which rounds to a float >= -1 (half
+ * a float ulp there is 3e-8).  (In double the same
+ * form misses its bar 1.5-2x near u = 0 and u = -1: the double samplers
+ * keep the three forms in long double.) */
+MIST__F MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y)
+{
+    MIST__T omg = MIST__C(1) - g, d = omg + MIST__C(2) * g * x;
+    return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
+}
+
 /* THE SAME, BRANCH-FREE, for the batch forms (gcc and clang vectorise only
  * a body without branches).  The forms are blended: with lo, hi in {0, 1}
  * (u < -1/2, u > +1/2) the numerator  na lo + nb hi + nm (1 - lo - hi)  is
@@ -660,7 +685,8 @@ MIST__F MIST__T MIST__FN(mist__hg_sample_k)(MIST__T ga, MIST__T neg, MIST__T xi,
 /* xi clamped to [0, 1] (z = 0, one = 1: see mist__hg_sample_k), NaN -> 0. */
 MIST__F MIST__T MIST__FN(mist__clamp01)(MIST__T xi, MIST__T z, MIST__T one)
 {
-    return xi > z ? (xi < one ? xi : one) : z;
+    xi = xi > z ? xi : z;               /* two selects, not nested: max, min */
+    return xi < one ? xi : one;
 }
 
 /* u clamped to [-1, 1] as selects; NaN stays NaN (callers select 0). */
@@ -768,6 +794,22 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 }
 #endif
 
+/* The HG sample at sanitised |g| < 1, xi in [0, 1]: float in double by the
+ * one form (mist__hg_one), double by the three forms in long double (0.5
+ * ulp instead of up to 4.4 in double, measured), else in T. */
+MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
+{
+#if defined(MIST__W_EXACT)
+    MIST__W x = (MIST__W)xi, y = (MIST__W)1 - x;
+    return g >= MIST__C(0) ?  (MIST__T)MIST__WFN(mist__hg_one)((MIST__W)g, x, y)
+                           : -(MIST__T)MIST__WFN(mist__hg_one)(-(MIST__W)g, y, x);
+#elif defined(MIST__W)
+    return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
+#else
+    return MIST__FN(mist__hg_sample)(g, xi);
+#endif
+}
+
 /* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
  * Domain: g in [-1, 1], xi in [0, 1]. */
 MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
@@ -775,11 +817,7 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
     g  = MIST__FN(mist__g)(g);
     xi = MIST__FN(mist__clamp01)(xi, MIST__C(0), MIST__C(1));
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
-#ifdef MIST__W   /* in the wide type: 0.5 ulp instead of up to 4.4 (measured) */
-    return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
-#else
-    return MIST__FN(mist__hg_sample)(g, xi);
-#endif
+    return MIST__FN(mist__hg_u)(g, xi);
 }
 
 #endif /* !MIST__INTERNAL_ONLY */
@@ -1431,11 +1469,7 @@ MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
     }
     g = p->g_hg;                                /* HG, sanitised already */
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
-#ifdef MIST__W
-    return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
-#else
-    return MIST__FN(mist__hg_sample)(g, xi);
-#endif
+    return MIST__FN(mist__hg_u)(g, xi);
 }
 
 #ifndef MIST_NO_DIR
@@ -1675,7 +1709,21 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
         for (i = 0; i < n; ++i) out[i] = g;
         return;
     }
-#if defined(MIST__W_SCALAR) || !defined(__AVX__)
+#if defined(MIST__W_EXACT)
+    {   /* float: the one form in double, branch-free (mist__hg_one); the 0
+         * and 1 of the clamp at run time (see mist__hg_sample_k) */
+        volatile MIST__T z0 = 0;
+        MIST__T z = z0, one = z + 1;
+        MIST__W gw = (MIST__W)g < 0 ? -(MIST__W)g : (MIST__W)g;
+        if (g >= MIST__C(0)) {
+            MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
+                         y_[j_] = (MIST__T)MIST__WFN(mist__hg_one)(gw, x, 1 - x))
+        } else {
+            MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
+                         y_[j_] = -(MIST__T)MIST__WFN(mist__hg_one)(gw, 1 - x, x))
+        }
+    }
+#elif defined(MIST__W_SCALAR) || !defined(__AVX__)
     /* long double has no vectors; and with 2 doubles a vector (SSE2, NEON)
      * the blended body is slower than the branches (measured: 5.8 against
      * 4.2 ns per element, gcc 12 -O2, SSE2): loop over the scalar function */
