@@ -378,6 +378,10 @@ static double n_draine_evalf(void) NCALL(float, mist_draine_eval_nf(0.5f, 17.f, 
 static double n_draine_eval(void)  NCALL(double, mist_draine_eval_n(0.5, 17., ud, out_double, N))
 static double n_draine_samplef(void) NCALL(float, mist_draine_sample_nf(0.5f, 17.f, xf, out_float, N))
 static double n_draine_sample(void)  NCALL(double, mist_draine_sample_n(0.5, 17., xd, out_double, N))
+static double n_phase_dr_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_drf, xf, out_float, N))
+static double n_phase_dr_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_drf, uf, out_float, N))
+static double n_phase_dr_sample(void) NCALL(double, mist_phase_sample_n(&ph_dr, xd, out_double, N))
+static double v_eq6f(void) VLOOP(float, draine_eq6f(0.5f, 17.f, xf[i]))
 static double n_rayleigh_evalf(void) NCALL(float, mist_rayleigh_eval_nf(uf, out_float, N))
 static double n_rayleigh_eval(void)  NCALL(double, mist_rayleigh_eval_n(ud, out_double, N))
 static double n_rayleigh_samplef(void) NCALL(float, mist_rayleigh_sample_nf(xf, out_float, N))
@@ -421,6 +425,9 @@ static void hg_target_rows(void)
     b = measure(v_bare_sample, &lo, &hi);
     row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, 0);
     row("mist_hg_sample_n", n_hg_sample, "eq. 3", b);
+    b = measure(v_eq6f, &lo, &hi);
+    row("eq. 6 Draine sample (float, array)", v_eq6f, NULL, 0);
+    row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "eq. 6", b);
 }
 
 static void batch_rows(void)
@@ -434,6 +441,10 @@ static void batch_rows(void)
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
     row_speedup("mist_draine_sample_nf (loop)", n_draine_samplef, b_draine_samplef);
     row_speedup("mist_draine_sample_n  (loop)", n_draine_sample, b_draine_sample);
+    row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
+    row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
+                b_phase_draine_samplef);
+    row_speedup("mist_phase_sample_n  (loop)", n_phase_dr_sample, b_phase_draine_sample);
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf (loop)", n_rayleigh_samplef, b_rayleigh_samplef);

@@ -306,7 +306,17 @@
 #    define MIST_FUNC static inline __host__ __device__
 #  else
 #    define MIST_FUNC static inline
+#    if defined(__GNUC__)
+/* The kernels of the vectorised batch loops: gcc stops inlining in a large
+ * translation unit (its unit-growth limits), and a loop that calls a
+ * function does not vectorise (mist_phase_sample_nf: 40 against 11 ns an
+ * element, measured in bench/mist_bench.c). */
+#      define MIST__HOT __attribute__((always_inline))
+#    endif
 #  endif
+#endif
+#ifndef MIST__HOT
+#  define MIST__HOT
 #endif
 
 #ifdef __cplusplus
@@ -553,7 +563,7 @@ MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
 /* ======================================================================== */
 
 /* V^2 = 1 + g^2 - 2 g u as a sum of non-negative terms. */
-MIST__F MIST__T MIST__FN(mist__v2)(MIST__T g, MIST__T u)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__v2)(MIST__T g, MIST__T u)
 {
     MIST__T ag = g < MIST__C(0) ? -g : g;
     MIST__T omg = MIST__C(1) - ag;
@@ -595,7 +605,7 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
  * the rounding of 1 - xi: both only enter sums of non-negative terms and
  * relative factors): na = (1 + u) D^2, nb = (1 - u) D^2, D^2; ea and omg
  * for the middle form (mist__hg_mid).  See the section comment. */
-MIST__F void MIST__FN(mist__hg_terms)(MIST__T g, MIST__T x, MIST__T y, MIST__T *na,
+MIST__F MIST__HOT void MIST__FN(mist__hg_terms)(MIST__T g, MIST__T x, MIST__T y, MIST__T *na,
                                       MIST__T *nb, MIST__T *d2, MIST__T *ea, MIST__T *omg)
 {
     MIST__T opg = MIST__C(1) + g, d, eb;
@@ -609,7 +619,7 @@ MIST__F void MIST__FN(mist__hg_terms)(MIST__T g, MIST__T x, MIST__T y, MIST__T *
 }
 
 /* |u| <= 1/2: u D^2 = 2 xi (1+g^2)(1 - g + g xi) - (1-g)^2 */
-MIST__F MIST__T MIST__FN(mist__hg_mid)(MIST__T g, MIST__T x, MIST__T ea, MIST__T omg)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_mid)(MIST__T g, MIST__T x, MIST__T ea, MIST__T omg)
 {
     return MIST__FN(mist__fma)(MIST__C(2) * x * (MIST__C(1) + g * g), ea, -(omg * omg));
 }
@@ -651,7 +661,7 @@ MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
  * a float ulp there is 3e-8).  (In double the same
  * form misses its bar 1.5-2x near u = 0 and u = -1: the double samplers
  * keep the three forms in long double.) */
-MIST__F MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y)
 {
     MIST__T omg = MIST__C(1) - g, d = omg + MIST__C(2) * g * x;
     return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
@@ -667,7 +677,7 @@ MIST__F MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y)
  * literal constants, duplicates the division into branches and then
  * refuses to vectorise (it may trap).  tests/test_batch.c checks that the
  * results are mist__hg_sample's, bit for bit.  ga = |g| < 1. */
-MIST__F MIST__T MIST__FN(mist__hg_sample_k)(MIST__T ga, MIST__T neg, MIST__T xi,
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_sample_k)(MIST__T ga, MIST__T neg, MIST__T xi,
                                             MIST__T z, MIST__T one)
 {
     MIST__T x = neg * (one - xi) + (one - neg) * xi;
@@ -683,14 +693,14 @@ MIST__F MIST__T MIST__FN(mist__hg_sample_k)(MIST__T ga, MIST__T neg, MIST__T xi,
 }
 
 /* xi clamped to [0, 1] (z = 0, one = 1: see mist__hg_sample_k), NaN -> 0. */
-MIST__F MIST__T MIST__FN(mist__clamp01)(MIST__T xi, MIST__T z, MIST__T one)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp01)(MIST__T xi, MIST__T z, MIST__T one)
 {
     xi = xi > z ? xi : z;               /* two selects, not nested: max, min */
     return xi < one ? xi : one;
 }
 
 /* u clamped to [-1, 1] as selects; NaN stays NaN (callers select 0). */
-MIST__F MIST__T MIST__FN(mist__clamp11)(MIST__T u)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 {
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
@@ -724,7 +734,7 @@ MIST__F MIST__T MIST__FN(mist__hg_k)(MIST__T g)
 
 /* The HG density at sanitised |g| < 1, u in [-1, 1], k = mist__hg_k(g):
  * one sqrt, one division (HG has no Draine factor to divide by). */
-MIST__F MIST__T MIST__FN(mist__hg_d)(MIST__T k, MIST__T g, MIST__T u)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_d)(MIST__T k, MIST__T g, MIST__T u)
 {
     MIST__T v2 = MIST__FN(mist__v2)(g, u);
     return k / (v2 * MIST__M(sqrt)(v2));
@@ -738,7 +748,7 @@ MIST__F MIST__T MIST__FN(mist__draine_cn)(MIST__T g, MIST__T c0, MIST__T c1)
 }
 
 /* The Draine density at sanitised |g| < 1, u: HG times its weight. */
-MIST__F MIST__T MIST__FN(mist__draine_d)(MIST__T k, MIST__T g, MIST__T c0, MIST__T c1,
+MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_d)(MIST__T k, MIST__T g, MIST__T c0, MIST__T c1,
                                          MIST__T cn, MIST__T u)
 {
     return MIST__FN(mist__hg_d)(k, g, u) * ((c0 + c1 * u * u) / cn);
@@ -988,7 +998,7 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
  * (mist__draine_kb; both lie in the table interval of xi, widened for
  * rounding).  *ok: that bound is below tol (|u1| + x / f(u0)); *eb: the
  * bound kb s^2.  Returns u1 (NaN or inf with *ok = 0 where f = 0). */
-MIST__F MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
+MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
                                             MIST__T st, MIST__T kb, MIST__T tol, int *ok,
                                             MIST__T *eb)
 {
@@ -1659,8 +1669,12 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
  * vectorises, and the unrolled, branchy code no longer vectorises. */
 #define MIST__BLK 32
 /* Runs STMT (which sets y_[j_] from x_[j_]) over in[0..n) in blocks. */
-#define MIST__BLOCKS(STMT)                                                   \
+#define MIST__BLOCKS(STMT) MIST__BLOCKS_FB(STMT, 0, (void)0)
+/* The same; where NEED, STMT may set f_[j_] = 1 to have FIX (which sets
+ * y_[j_] from x_[j_], branchy) redo that element before it is stored. */
+#define MIST__BLOCKS_FB(STMT, NEED, FIX)                                     \
     {   MIST__T x_[MIST__BLK], y_[MIST__BLK];                                \
+        unsigned char f_[MIST__BLK];                                         \
         size_t i_, j_, m_;                                                   \
         for (i_ = 0; i_ < n; i_ += m_) {                                     \
             m_ = n - i_;                                                     \
@@ -1672,6 +1686,8 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
                     x_[j_] = j_ < m_ ? in[i_ + j_] : MIST__C(0);             \
             }                                                                \
             for (j_ = 0; j_ < MIST__BLK; ++j_) { STMT; }                     \
+            if (NEED)                                                        \
+                for (j_ = 0; j_ < m_; ++j_) if (f_[j_]) { FIX; }             \
             if (m_ == MIST__BLK)                                             \
                 for (j_ = 0; j_ < MIST__BLK; ++j_) out[i_ + j_] = y_[j_];    \
             else                                                             \
@@ -1793,7 +1809,77 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
 }
 #endif /* !MIST_NO_RAYLEIGH */
 
+#ifndef MIST_NO_FOG
+/* Prepared density of each in[i] = u: mist_phase_eval(p, u).  One lobe
+ * (HG, Draine, CS, Rayleigh, a fog whose lobes share g) branch-free. */
+MIST__F void MIST__FN(mist_phase_eval_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+                                         MIST__T *out, size_t n)
+{
+    size_t i;
+    if (p && p->kind != 2 && p->ge > MIST__C(-1) && p->ge < MIST__C(1)) {
+        MIST__T ge = p->ge, a = p->a1, b = p->b1;
+        MIST__BLOCKS(MIST__T u = x_[j_];
+                     MIST__T c = MIST__FN(mist__clamp11)(u);
+                     MIST__T v2 = MIST__FN(mist__v2)(ge, c);
+                     MIST__T r = (a + b * c * c) / (v2 * MIST__M(sqrt)(v2));
+                     y_[j_] = u == u ? r : MIST__C(0))
+        return;
+    }
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_eval)(p, in[i]);
+}
+
+/* Prepared sample of each in[i] = xi: mist_phase_sample(p, xi).  HG as
+ * mist_hg_sample_n; in float, Draine and Cornette-Shanks vectorised: the
+ * start table and one straight-line Newton step in double
+ * (mist__draine_step) for a block, then the few elements whose step did
+ * not land, or whose rounding needs the residual (mist__draine_round),
+ * again by the scalar function. */
+MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+                                           MIST__T *out, size_t n)
+{
+    size_t i;
+    if (p && p->kind == 0 && p->w <= MIST__C(0)) {
+        MIST__FN(mist_hg_sample_n)(p->g_hg, in, out, n);
+        return;
+    }
+#if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
+    if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
+        && p->g > MIST__C(-1) && p->g < MIST__C(1)) {
+        volatile MIST__T z0 = 0;
+        MIST__T z = z0, one = z + 1;
+        const MIST__T *tab = p->tab;
+        MIST__W gw = (MIST__W)p->g, fin = p->alpha < (MIST__T)INFINITY ? 1 : 0;
+        MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
+        MIST__BLOCKS_FB(
+            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+            MIST__T t = xi * MIST__PHASE_K;
+            MIST__T d; MIST__T m0; MIST__T m1; MIST__T st; MIST__T lo; MIST__T hi;
+            MIST__W uw; MIST__W eb; MIST__W w;
+            int k = (int)t; int ok;
+            k = k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
+            t -= (MIST__T)k;
+            d = tab[k + 1] - tab[k];
+            m0 = tab[MIST__PHASE_K + 1 + k]; m1 = tab[MIST__PHASE_K + 2 + k];
+            st = tab[k] + t * (m0 + t * ((MIST__C(3) * d - MIST__C(2) * m0 - m1)
+                                         + t * (m0 + m1 - MIST__C(2) * d)));
+            uw = MIST__WFN(mist__draine_step)(gw, fin, aw, (MIST__W)xi, (MIST__W)st,
+                                              (MIST__W)tab[2 * MIST__PHASE_K + 2 + k],
+                                              (MIST__W)MIST__EPS / 64, &ok, &eb);
+            uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);
+            w = 2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512);
+            lo = (MIST__T)(uw - w); hi = (MIST__T)(uw + w);
+            y_[j_] = lo;
+            f_[j_] = (unsigned char)!(ok && lo == hi);,
+            1, y_[j_] = MIST__FN(mist_phase_sample)(p, x_[j_]))
+        return;
+    }
+#endif
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_sample)(p, in[i]);
+}
+#endif /* !MIST_NO_FOG */
+
 #undef MIST__BLOCKS
+#undef MIST__BLOCKS_FB
 #undef MIST__BLK
 #endif /* !MIST_NO_BATCH */
 

@@ -1,8 +1,10 @@
 /* test_batch.c - the batch forms (include/mist.h, "Batch forms") return
  * exactly what their scalar functions return, element by element, bit for
  * bit: mist_hg_eval_n, mist_hg_sample_n, mist_draine_eval_n,
- * mist_draine_sample_n, mist_rayleigh_eval_n, mist_rayleigh_sample_n and
- * their float forms (_nf).
+ * mist_draine_sample_n, mist_rayleigh_eval_n, mist_rayleigh_sample_n,
+ * the prepared mist_phase_eval_n and mist_phase_sample_n (HG and Draine:
+ * against mist_phase_eval and mist_phase_sample) and their float forms
+ * (_nf).
  *
  * Inputs: random values over and beyond the domain, and the edges and bad
  * input of DOMAIN AND BAD INPUT (NaN, +-inf, +-0, +-1 and their neighbours,
@@ -41,9 +43,11 @@ static const double g_list[] = { 0, 0.3, -0.3, 0.8, -0.95, 0.999, -0.9999, 1e-6,
 static const double a_list[] = { 0, 1e-7, 1, 17, 250, 1e4, 1e9, INFINITY, -1, NAN };
 static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, NMAX };
 
-enum { HG_EVAL, HG_SAMPLE, DR_EVAL, DR_SAMPLE, RL_EVAL, RL_SAMPLE, NKIND };
+enum { HG_EVAL, HG_SAMPLE, DR_EVAL, DR_SAMPLE, RL_EVAL, RL_SAMPLE, PD_EVAL, PD_SAMPLE,
+       PH_SAMPLE, NKIND };
 static const char *kind_name[] = { "hg_eval", "hg_sample", "draine_eval", "draine_sample",
-                                   "rayleigh_eval", "rayleigh_sample" };
+                                   "rayleigh_eval", "rayleigh_sample", "phase_eval (Draine)",
+                                   "phase_sample (Draine)", "phase_sample (HG)" };
 
 /* One definition for both types: T, its suffix S (empty or f). */
 #define CAT_(a, b) a##b
@@ -62,10 +66,27 @@ static int same_##T(T a, T b)                                                   
     return a >= lo && a <= hi && (a < 0) == (b < 0);                             \
 }                                                                                \
                                                                                   \
+/* the prepared phase function of kind k at (g, a), kept while they stay  */   \
+/* (preparing Draine costs ~129 samples)                                    */   \
+static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      \
+{                                                                                 \
+    static CAT(mist_phase, S) p;                                                  \
+    static T pg, pa;                                                              \
+    static int pk = -1;                                                           \
+    if (pk != k || !bits_##T(pg, g) || !bits_##T(pa, a)) {                         \
+        p = k == PH_SAMPLE ? CAT(mist_phase_hg, S)(g) : CAT(mist_phase_draine, S)(g, a); \
+        pk = k; pg = g; pa = a;                                                   \
+    }                                                                             \
+    return &p;                                                                    \
+}                                                                                 \
+                                                                                  \
 /* the scalar function of kind k */                                               \
 static T scalar_##T(int k, T g, T a, T x)                                        \
 {                                                                                 \
     switch (k) {                                                                  \
+    case PD_EVAL:   return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
+    case PD_SAMPLE: case PH_SAMPLE:                                               \
+                    return CAT(mist_phase_sample, S)(prep_##T(k, g, a), x);       \
     case HG_EVAL:   return CAT(mist_hg_eval, S)(g, x);                            \
     case HG_SAMPLE: return CAT(mist_hg_sample, S)(g, x);                          \
     case DR_EVAL:   return CAT(mist_draine_eval, S)(g, a, x);                     \
@@ -78,6 +99,9 @@ static T scalar_##T(int k, T g, T a, T x)                                       
 static void batch_##T(int k, T g, T a, const T *in, T *out, size_t n)             \
 {                                                                                 \
     switch (k) {                                                                  \
+    case PD_EVAL:   CAT(mist_phase_eval_n, S)(prep_##T(k, g, a), in, out, n); break; \
+    case PD_SAMPLE: case PH_SAMPLE:                                               \
+        CAT(mist_phase_sample_n, S)(prep_##T(k, g, a), in, out, n); break;        \
     case HG_EVAL:   CAT(mist_hg_eval_n, S)(g, in, out, n); break;                  \
     case HG_SAMPLE: CAT(mist_hg_sample_n, S)(g, in, out, n); break;                \
     case DR_EVAL:   CAT(mist_draine_eval_n, S)(g, a, in, out, n); break;           \
@@ -95,7 +119,7 @@ static void inputs_##T(int k, T g, mt_rng *r, T *x, int n)                      
                      NEXT((T)-1, (T)0), (T)0.5, (T)-0.5, (T)1e-30, (T)-1e-30, g,   \
                      (T)1.5, (T)-0.25 };                                           \
     int i, ns = (int)(sizeof sp / sizeof sp[0]);                                  \
-    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL;                        \
+    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL;        \
     for (i = 0; i < n; ++i) {                                                     \
         double v = mt_uniform(r);                                                 \
         if (i % 7 == 3) x[i] = sp[(i / 7) % ns];                                  \
@@ -142,7 +166,7 @@ int main(void)
             for (ai = 0; ai < sizeof a_list / sizeof a_list[0]; ++ai) {
                 double g = g_list[gi], a = a_list[ai];
                 if ((k == RL_EVAL || k == RL_SAMPLE) && (gi > 0 || ai > 0)) continue;
-                if ((k == HG_EVAL || k == HG_SAMPLE) && ai > 0) continue;
+                if ((k == HG_EVAL || k == HG_SAMPLE || k == PH_SAMPLE) && ai > 0) continue;
                 check_double(k, g, a, &r);
                 check_float(k, (float)g, (float)a, &r);
             }
