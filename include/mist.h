@@ -709,19 +709,31 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* ======================================================================== */
 /* Rayleigh: exact sampling                                                 */
 /* CDF (u^3 + 3u + 4)/8 = xi: the depressed cubic u^3 + 3u = q, q = 8xi-4,  */
-/* one real root (Cardano): u = A - 1/A,  A^3 = q/2 + sqrt(q^2/4 + 1).      */
-/* A - 1/A cancels near u = 0; with s = A^3 - 1 (computed without           */
-/* cancellation) it is  s (A + 1) / (A (A^2 + A + 1)),  all terms positive. */
-/* Solved for xi <= 1/2 (q <= 0) and mirrored, as HG; evaluated in the      */
-/* wider type like HG (in T it reaches 1.7x the bar, measured).             */
+/* one real root, u = A - 1/A with A^3 = q/2 + sqrt(q^2/4 + 1) (Cardano).   */
+/* Cardano costs a cbrt and a sqrt and cancels near u = 0; mist solves the  */
+/* cubic instead: its derivative 3u^2 + 3 >= 3 on [-1, 1], so the root is   */
+/* well conditioned everywhere.  Start: u = t R(t^2), t = q/4, R a cubic    */
+/* (least squares on [0, 1], relative error <= 2e-3), then two Halley steps */
+/* (cubic convergence: 8e-9, then rounding): measured <= 2.1 ulps of the    */
+/* type it runs in over 2e4 random q.  No branch, no libm call: the batch  */
+/* form vectorises.  u(-q) = -u(q) exactly (every operation is odd).       */
+/* Double evaluates it in long double, float in double (as HG).            */
 /* ======================================================================== */
 
-MIST__F MIST__T MIST__FN(mist__rayleigh_lower)(MIST__T xi)   /* xi in [0, 1/2], u <= 0 */
+/* u with u^3 + 3u = q, |q| <= 4 */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_root)(MIST__T q)
 {
-    MIST__T h = MIST__C(2) - MIST__C(4) * xi;                     /* |q|/2 in [0, 2] */
-    MIST__T s = h + h * h / (MIST__M(sqrt)(h * h + MIST__C(1)) + MIST__C(1));
-    MIST__T a = MIST__M(cbrt)(MIST__C(1) + s);
-    return -s * (a + MIST__C(1)) / (a * (a * a + a + MIST__C(1)));
+    MIST__T t = MIST__C(0.25) * q, t2 = t * t, u, u2, f, fp;
+    int k;
+    u = t * (MIST__C(1.3319700939812929) + t2 * (MIST__C(-0.69526968499186551)
+             + t2 * (MIST__C(0.6053388359442498) + t2 * MIST__C(-0.24387677524653627))));
+    for (k = 0; k < 2; ++k) {            /* Halley: u -= 2 f f' / (2 f'^2 - f f'') */
+        u2 = u * u;
+        f  = u * (u2 + MIST__C(3)) - q;
+        fp = MIST__C(3) * (u2 + MIST__C(1));
+        u -= MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - MIST__C(6) * f * u);
+    }
+    return u;
 }
 #endif /* !MIST_NO_RAYLEIGH */
 
@@ -1235,13 +1247,10 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 {
     MIST__T u;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
-#ifdef MIST__W   /* in the wide type: 0.5 ulp instead of up to 7 (measured) */
-    u = xi <= MIST__C(0.5)
-        ?  (MIST__T)MIST__WFN(mist__rayleigh_lower)((MIST__W)xi)
-        : -(MIST__T)MIST__WFN(mist__rayleigh_lower)((MIST__W)(MIST__C(1) - xi));
+#ifdef MIST__W   /* in the wide type (8 xi - 4 exact there but for xi < 2^-61) */
+    u = (MIST__T)MIST__WFN(mist__rayleigh_root)((MIST__W)8 * (MIST__W)xi - (MIST__W)4);
 #else
-    u = xi <= MIST__C(0.5) ?  MIST__FN(mist__rayleigh_lower)(xi)
-                           : -MIST__FN(mist__rayleigh_lower)(MIST__C(1) - xi);
+    u = MIST__FN(mist__rayleigh_root)(MIST__C(8) * xi - MIST__C(4));
 #endif
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
@@ -1801,11 +1810,21 @@ MIST__F void MIST__FN(mist_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, siz
     MIST__BLOCKS(y_[j_] = MIST__FN(mist_rayleigh_eval)(x_[j_]))   /* branch-free */
 }
 
-/* Rayleigh sample of each in[i] = xi: mist_rayleigh_sample (a plain loop). */
+/* Rayleigh sample of each in[i] = xi: mist_rayleigh_sample (float:
+ * vectorised, the same root in double; double: a plain loop, its root is
+ * in long double). */
 MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, size_t n)
 {
+#if defined(MIST__W_EXACT)
+    volatile MIST__T z0 = 0;
+    MIST__T z = z0, one = z + 1;
+    MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
+                 y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_root)(
+                     (MIST__W)8 * x - (MIST__W)4)))
+#else
     size_t i;
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_rayleigh_sample)(in[i]);
+#endif
 }
 #endif /* !MIST_NO_RAYLEIGH */
 
