@@ -233,6 +233,49 @@ static void test_monotone(void)
             }
 }
 
+/* The float HG and Rayleigh samplers compute one form in double and round
+ * it (mist__hg_one, mist__rayleigh_root): their double error (~1e-16 of
+ * 1 + u near u = -1, of 1 - u near u = +1) must not reorder adjacent xi
+ * where u crosses a float rounding midpoint.  Near the ends u moves by
+ * less than a float ulp over very many xi, so runs of adjacent floats
+ * around the xi of each of the first 24 midpoints above -1 and below +1
+ * (found by bisection on the double sampler), g up to 1 - 2^-24: they
+ * straddle every midpoint with 3000 xi on either side. */
+static void test_monotone_midpoints(void)
+{
+    static const float gs[] = { 0, 0.3f, 0.9f, 0.999f, 0.9999f, 1 - 0x1p-20f, 1 - 0x1p-24f,
+                                -0.5f, -0.999f, -(1 - 0x1p-20f) };
+    int ig, m, side, bad = 0, it, k, n = (int)mt_scale(24, 6);
+    for (ig = 0; ig < (int)(sizeof gs / sizeof *gs) + 1; ++ig) {
+        int ray = ig == (int)(sizeof gs / sizeof *gs);          /* last: Rayleigh */
+        float g = ray ? 0 : gs[ig];
+        for (side = 0; side < 2; ++side)
+            for (m = 0; m < n; ++m) {
+                double target = side ? 1 - (2 * m + 1) * 0x1p-25 : -1 + (2 * m + 1) * 0x1p-25;
+                float lo = 0, hi = 1, x, prev;
+                for (it = 0; it < 200; ++it) {               /* xi where u crosses it */
+                    float mid = (float)(0.5 * ((double)lo + hi));
+                    double u;
+                    if (mid == lo || mid == hi) break;
+                    u = ray ? mist_rayleigh_sample(mid) : mist_hg_sample(g, mid);
+                    if (u < target) lo = mid; else hi = mid;
+                }
+                x = lo;
+                for (k = 0; k < 3000; ++k) x = nextafterf(x, 0);
+                prev = ray ? mist_rayleigh_samplef(x) : mist_hg_samplef(g, x);
+                for (k = 0; k < 6000; ++k) {
+                    float u;
+                    x = nextafterf(x, 2);
+                    u = ray ? mist_rayleigh_samplef(x) : mist_hg_samplef(g, x);
+                    bad += u < prev;
+                    prev = u;
+                }
+            }
+    }
+    mt_check(bad == 0, "float HG / Rayleigh samples monotone across rounding midpoints: "
+             "%d decreases", bad);
+}
+
 /* Issue 2: alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
  * c0 = 1/alpha -> 0: near u = 0 the CDF has an (almost) triple point, and
  * a solver that judged convergence by the density at its iterate stopped
@@ -374,6 +417,7 @@ int main(void)
     test_random_params((int)mt_scale(3000, 300));
     test_delta();
     test_monotone();
+    test_monotone_midpoints();
     printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f, float %.3f\n",
            n_points, worst_d, worst_f);
     return mt_done("test_accuracy");
