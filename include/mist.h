@@ -102,12 +102,16 @@
  *   clang vectorise them at -O2 and -O3.  Bodies with a square root (the
  *   evals of HG and Draine) vectorise only where sqrt need not set errno
  *   (-fno-math-errno, implied by -ffast-math; the default on macOS).  The
- *   float HG sampler (double inside) is vectorised where x86 AVX is on
- *   (-mavx or -march=...): with 2 doubles a vector it would be slower than
- *   the scalar code.  The Draine and Rayleigh samplers (iterations, cbrt)
- *   and the double HG sampler (long double inside) are plain loops, as
- *   fast as the scalar calls, not faster.  Measured, each against a loop of
- *   scalar calls: bench/mist_bench.c (README "Batch forms").
+ *   float HG and Rayleigh samplers (one straight-line form in double) are
+ *   vectorised.  The unprepared Draine sampler (iterations) and the double
+ *   HG and Rayleigh samplers (long double inside, where it is wider than
+ *   double) are plain loops, as fast as the scalar calls, not faster.  Prepared: mist_phase_eval_n(&ph, u[], out[], n)
+ *   and mist_phase_sample_n (float: _nf) equal mist_phase_eval and
+ *   mist_phase_sample element by element; in float the Draine and
+ *   Cornette-Shanks samples are vectorised (the start table and one
+ *   straight-line Newton step a block; the few elements that need more go
+ *   through the scalar function).  Measured, each against a loop of scalar
+ *   calls: bench/mist_bench.c (README "Batch forms").
  *
  * FAST MATH (-ffast-math and its parts; measured with gcc 12 and clang 14)
  *   Compiled with the includer's -ffast-math, mist breaks: gcc's
@@ -710,30 +714,43 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* Rayleigh: exact sampling                                                 */
 /* CDF (u^3 + 3u + 4)/8 = xi: the depressed cubic u^3 + 3u = q, q = 8xi-4,  */
 /* one real root, u = A - 1/A with A^3 = q/2 + sqrt(q^2/4 + 1) (Cardano).   */
-/* Cardano costs a cbrt and a sqrt and cancels near u = 0; mist solves the  */
-/* cubic instead: its derivative 3u^2 + 3 >= 3 on [-1, 1], so the root is   */
-/* well conditioned everywhere.  Start: u = t R(t^2), t = q/4, R a cubic    */
-/* (least squares on [0, 1], relative error <= 2e-3), then two Halley steps */
-/* (cubic convergence: 8e-9, then rounding): measured <= 2.1 ulps of the    */
-/* type it runs in over 2e4 random q.  No branch, no libm call: the batch  */
-/* form vectorises.  u(-q) = -u(q) exactly (every operation is odd).       */
+/* Cardano costs a cbrt and a sqrt, cancels near u = 0 and, worse, carries  */
+/* its rounding relative to |u| near u = -1, where u moves by less than     */
+/* that per ulp of xi: the 1e10-call stress run found adjacent double xi    */
+/* in the wrong order (xi 0x1.308dea28b34p-11 and its successor).  So mist  */
+/* solves for v = 1 + u on the lower half, x = min(xi, 1 - xi) in [0, 1/2] */
+/* (1 - xi exact there), v in [0, 1]:                                       */
+/*   v (v^2 - 3v + 6) = 8x,                                                 */
+/* exact in x, well conditioned (the derivative 3v^2 - 6v + 6 >= 3), and    */
+/* solved to a few ulps of v itself; u = v - 1, mirrored for xi > 1/2.      */
+/* Start v = x R(x), R a cubic (least squares on [0, 1/2], relative error   */
+/* <= 1.9e-3), then two Halley steps (cubic convergence: ~1e-8, then        */
+/* rounding): measured <= 3.2 ulps of v in the type it runs in over 2e4     */
+/* random x.  No branch, no libm call: the float batch form vectorises.    */
 /* Double evaluates it in long double, float in double (as HG).            */
 /* ======================================================================== */
 
-/* u with u^3 + 3u = q, |q| <= 4 */
-MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_root)(MIST__T q)
+/* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2] */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_v)(MIST__T x)
 {
-    MIST__T t = MIST__C(0.25) * q, t2 = t * t, u, u2, f, fp;
+    MIST__T v, f, fp;
     int k;
-    u = t * (MIST__C(1.3319700939812929) + t2 * (MIST__C(-0.69526968499186551)
-             + t2 * (MIST__C(0.6053388359442498) + t2 * MIST__C(-0.24387677524653627))));
-    for (k = 0; k < 2; ++k) {            /* Halley: u -= 2 f f' / (2 f'^2 - f f'') */
-        u2 = u * u;
-        f  = u * (u2 + MIST__C(3)) - q;
-        fp = MIST__C(3) * (u2 + MIST__C(1));
-        u -= MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - MIST__C(6) * f * u);
+    v = x * (MIST__C(1.3356861810153138) + x * (MIST__C(0.7568693129572861)
+             + x * (MIST__C(1.841644170954037) + x * MIST__C(-1.3681288965997234))));
+    for (k = 0; k < 2; ++k) {            /* Halley: v -= 2 f f' / (2 f'^2 - f f'') */
+        f  = v * (v * (v - MIST__C(3)) + MIST__C(6)) - MIST__C(8) * x;
+        fp = v * (MIST__C(3) * v - MIST__C(6)) + MIST__C(6);
+        v -= MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - f * (MIST__C(6) * v - MIST__C(6)));
     }
-    return u;
+    return v;
+}
+
+/* u from xi in [0, 1]: the lower half's v, mirrored (u(xi) = -u(1 - xi)) */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_u)(MIST__T xi)
+{
+    MIST__T y = MIST__C(1) - xi, x = xi < y ? xi : y;
+    MIST__T s = xi > MIST__C(0.5) ? MIST__C(-1) : MIST__C(1);
+    return s * (MIST__FN(mist__rayleigh_v)(x) - MIST__C(1));
 }
 #endif /* !MIST_NO_RAYLEIGH */
 
@@ -1247,10 +1264,10 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 {
     MIST__T u;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
-#ifdef MIST__W   /* in the wide type (8 xi - 4 exact there but for xi < 2^-61) */
-    u = (MIST__T)MIST__WFN(mist__rayleigh_root)((MIST__W)8 * (MIST__W)xi - (MIST__W)4);
+#ifdef MIST__W   /* in the wide type */
+    u = (MIST__T)MIST__WFN(mist__rayleigh_u)((MIST__W)xi);
 #else
-    u = MIST__FN(mist__rayleigh_root)(MIST__C(8) * xi - MIST__C(4));
+    u = MIST__FN(mist__rayleigh_u)(xi);
 #endif
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
@@ -1819,8 +1836,7 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
     volatile MIST__T z0 = 0;
     MIST__T z = z0, one = z + 1;
     MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
-                 y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_root)(
-                     (MIST__W)8 * x - (MIST__W)4)))
+                 y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_u)(x)))
 #else
     size_t i;
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_rayleigh_sample)(in[i]);

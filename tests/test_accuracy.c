@@ -276,6 +276,43 @@ static void test_monotone_midpoints(void)
              "%d decreases", bad);
 }
 
+/* The Rayleigh sampler near u = -1 (and +1): u moves by less than an ulp
+ * per ulp of xi there, so an error relative to |u| (Cardano's A - 1/A,
+ * which mist used before) reorders adjacent xi; the 1e10-call stress run
+ * found it at these six double xi.  Runs of 3e5 adjacent doubles
+ * around each, and 1e6 down from xi = 1 (the old header: 85 decreases). */
+static void test_rayleigh_ends(void)
+{
+    static const double xs[] = { 0x1.308dea28b34p-11, 0x1.ede6a71f0c7e6p-13,
+                                 0x1.919bb6d9a7799p-14, 0x1.a04c72ed9e7b7p-12,
+                                 0x1.7e4542a03ef46p-14, 0x1.89dfa6a51ep-13 };
+    int i, k, bad = 0, run = (int)mt_scale(100000, 20000);
+    for (i = 0; i < 6; ++i) {
+        double x = xs[i], prev;
+        for (k = 0; k < run; ++k) x = nextafter(x, 0);
+        prev = mist_rayleigh_sample(x);
+        for (k = 0; k < 3 * run; ++k) {
+            double u;
+            x = nextafter(x, 1);
+            u = mist_rayleigh_sample(x);
+            bad += u < prev;
+            prev = u;
+        }
+    }
+    {
+        double x = 1, prev = mist_rayleigh_sample(x);
+        for (k = 0; k < 10 * run; ++k) {
+            double u;
+            x = nextafter(x, 0);
+            u = mist_rayleigh_sample(x);
+            bad += u > prev;
+            prev = u;
+        }
+    }
+    mt_check(bad == 0, "double Rayleigh samples monotone near u = -1 and +1: %d reversals",
+             bad);
+}
+
 /* Issue 2: alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
  * c0 = 1/alpha -> 0: near u = 0 the CDF has an (almost) triple point, and
  * a solver that judged convergence by the density at its iterate stopped
@@ -418,6 +455,7 @@ int main(void)
     test_delta();
     test_monotone();
     test_monotone_midpoints();
+    test_rayleigh_ends();
     printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f, float %.3f\n",
            n_points, worst_d, worst_f);
     return mt_done("test_accuracy");
