@@ -892,6 +892,15 @@ static void test_average_phase(void)
  * the plain sums (fuzz/fuzz_mie.c found them: NaN or zero results with
  * status OK), and moments of extreme laws against closed forms and an
  * independent long-double Simpson rule. */
+/* -ffast-math links start-up code that flushes subnormals (FTZ/DAZ: see
+ * FAST MATH in mist.h): a subnormal weight is read as 0 there (EDOMAIN),
+ * so those two checks are left out of such builds (variant_fastmath). */
+#ifdef __FAST_MATH__
+#  define SUBNORMAL_OK 0
+#else
+#  define SUBNORMAL_OK 1
+#endif
+
 static int same_avg(const mist_mie_avg *a, const mist_mie_avg *b, double c2, double c3)
 {
     return a->status == MIST_MIE_OK && b->status == MIST_MIE_OK && b->c_ext == a->c_ext * c2
@@ -935,7 +944,7 @@ static void test_average_extremes(void)
     d = mist_mie_dist_gamma(5, 0.2);
     d.r_min = 0.01; d.r_max = 16; d.n_radii = 64;
     a = mist_mie_average(&d, wl, 2, 1.0, mu, NM, p);
-    for (k = 0; k < 2; ++k) {
+    for (k = SUBNORMAL_OK ? 0 : 1; k < 2; ++k) {
         double sc = k ? 0x1p1000 : 0x1p-1060;
         static const double rr[2] = {1, 2.5};
         double tw[2], tw2[2];
@@ -994,16 +1003,18 @@ static void test_average_extremes(void)
              c.status);
 
     /* (2) a subnormal wavelength weight (5.1e-315): the same as weight 1 */
-    d = mist_mie_dist_modgamma(0.5, 0.5, 0.1);
-    d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 8;
-    w2[0] = mist_mie_wl(0.532, 1, mist_mie_cplx(1.01, 0));
-    b = mist_mie_average(&d, w2, 1, 1.217, mu, NM, p);
-    w2[0].weight = 5.1e-315;
-    c = mist_mie_average(&d, w2, 1, 1.217, mu, NM, q);
-    ok = same_avg(&b, &c, 1, 1) && c.area > 0 && c.c_sca > 0;
-    for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
-    mt_check(ok, "average: weight 5.1e-315: status %d C_sca %g area %g (weight 1: %g, %g)",
-             c.status, c.c_sca, c.area, b.c_sca, b.area);
+    if (SUBNORMAL_OK) {
+        d = mist_mie_dist_modgamma(0.5, 0.5, 0.1);
+        d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 8;
+        w2[0] = mist_mie_wl(0.532, 1, mist_mie_cplx(1.01, 0));
+        b = mist_mie_average(&d, w2, 1, 1.217, mu, NM, p);
+        w2[0].weight = 5.1e-315;
+        c = mist_mie_average(&d, w2, 1, 1.217, mu, NM, q);
+        ok = same_avg(&b, &c, 1, 1) && c.area > 0 && c.c_sca > 0;
+        for (j = 0; j < NM; ++j) ok = ok && q[j] == p[j];
+        mt_check(ok, "average: weight 5.1e-315: status %d C_sca %g area %g (weight 1: %g, %g)",
+                 c.status, c.c_sca, c.area, b.c_sca, b.area);
+    }
 
     /* (3) weights 1.9e214 (wavelength) x 3.9e137 (table) overflowed the
      * products: the same as the one radius alone */
