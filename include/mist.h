@@ -1183,6 +1183,22 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     return u;
 }
 
+/* The prepared start at xi in [0, 1]: the table's cubic Hermite
+ * interpolant in interval *j (tab: u at xi = j/K, then the slopes
+ * du/dxi / K). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__T xi, int *j)
+{
+    MIST__T t = xi * MIST__PHASE_K, d, m0, m1;
+    int k = (int)t;
+    k = k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
+    t -= (MIST__T)k;
+    d = tab[k + 1] - tab[k];
+    m0 = tab[MIST__PHASE_K + 1 + k]; m1 = tab[MIST__PHASE_K + 2 + k];
+    *j = k;
+    return tab[k] + t * (m0 + t * ((MIST__C(3) * d - MIST__C(2) * m0 - m1)
+                                   + t * (m0 + m1 - MIST__C(2) * d)));
+}
+
 /* The sampler at sanitised g, alpha (c0, c1 its weights), xi in [0, 1];
  * prepared (else NULL): f0, F_g(0) and F_-g(0) as hi + lo pairs; tab, the
  * start table (u at xi = j/K, then the slopes du/dxi / K): cubic Hermite. */
@@ -1194,14 +1210,8 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
     if (c1 == MIST__C(0)) return MIST__FN(mist_hg_sample)(g, xi);
     if (tab) {
-        MIST__T t = xi * MIST__PHASE_K, d, m0, m1;
-        int j = (int)t;
-        j = j < MIST__PHASE_K ? j : MIST__PHASE_K - 1;
-        t -= (MIST__T)j;
-        d = tab[j + 1] - tab[j];
-        m0 = tab[MIST__PHASE_K + 1 + j]; m1 = tab[MIST__PHASE_K + 2 + j];
-        st = tab[j] + t * (m0 + t * ((MIST__C(3) * d - MIST__C(2) * m0 - m1)
-                                     + t * (m0 + m1 - MIST__C(2) * d)));
+        int j;
+        st = MIST__FN(mist__phase_start)(tab, xi, &j);
 #ifdef MIST__W
         {   /* wide Newton steps with an a-priori stop, no branch on xi (see
              * mist__draine_step); a second only from inside [u_j, u_j+1], kb's
@@ -1887,16 +1897,10 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
         MIST__BLOCKS_FB(
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-            MIST__T t = xi * MIST__PHASE_K;
-            MIST__T d; MIST__T m0; MIST__T m1; MIST__T st; MIST__T lo; MIST__T hi;
+            MIST__T lo; MIST__T hi;
             MIST__W uw; MIST__W eb; MIST__W w;
-            int k = (int)t; int ok;
-            k = k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
-            t -= (MIST__T)k;
-            d = tab[k + 1] - tab[k];
-            m0 = tab[MIST__PHASE_K + 1 + k]; m1 = tab[MIST__PHASE_K + 2 + k];
-            st = tab[k] + t * (m0 + t * ((MIST__C(3) * d - MIST__C(2) * m0 - m1)
-                                         + t * (m0 + m1 - MIST__C(2) * d)));
+            int k; int ok;
+            MIST__T st = MIST__FN(mist__phase_start)(tab, xi, &k);
             uw = MIST__WFN(mist__draine_step)(gw, fin, aw, (MIST__W)xi, (MIST__W)st,
                                               (MIST__W)tab[2 * MIST__PHASE_K + 2 + k],
                                               (MIST__W)MIST__EPS / 64, &ok, &eb);
