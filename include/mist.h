@@ -1693,12 +1693,13 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* ======================================================================== */
 /* Batch forms: out[i] = f(in[i]), i < n                                    */
 /* Each equals its scalar function element by element (the same kernels:   */
-/* mist__hg_d, mist__hg_sample, mist__clamp01/11), with the parameters      */
+/* mist__hg_d, mist__hg_one, mist__rayleigh_u, mist__draine_step,           */
+/* mist__clamp01/11, forced inline: MIST__HOT), with the parameters         */
 /* sanitised once.  The work goes in blocks of MIST__BLK into local arrays: */
 /* the block loop has a constant trip count, no aliasing (so in == out is   */
 /* allowed) and a branch-free body, which gcc's -O2 "very cheap" cost model */
-/* and clang vectorise.  The Draine and Rayleigh samplers (iterations,      */
-/* cbrt) are plain loops over the scalar function.                          */
+/* and clang vectorise.  The unprepared Draine sampler (iterations) and the */
+/* samplers in long double are plain loops over the scalar function.        */
 /* ======================================================================== */
 
 /* 32: gcc -O3 completely unrolls loops of up to 16 iterations before it
