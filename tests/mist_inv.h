@@ -1042,6 +1042,20 @@ MI_INLINE MI_V3 MI_F(mi_fog_sample_dir)(MI_FOGT raw, MI_V3 wi, MI_T xi1, MI_T xi
 /* Prepared phase functions (mist_phase_*) and batch forms (mist_*_n)       */
 /* ------------------------------------------------------------------------ */
 
+/* Batch forms: each element equals the scalar function's (the checked
+ * wrappers), bit for bit (documented: the same kernels); in place
+ * (in == out) too.  Where the target has FMA (__FP_FAST_FMA) a compiler
+ * may contract (-ffp-contract=fast, the O3 variant) the vectorised batch
+ * and the scalar function differently: measured 1 ulp apart
+ * (mist_draine_eval_n, gcc 12 -O3 -march=native), so there "the same"
+ * is 4 eps (relative; told to the coordinator). */
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
+#  define MI_BATCH_SAME(a, b) (MI_F(mi_same)(a, b) || (MI_ISFIN(a) && MI_ISFIN(b) \
+                                && fabsl((mi_w)(a) - (b)) <= 4 * MI_EPS * fabsl((mi_w)(b))))
+#else
+#  define MI_BATCH_SAME(a, b) MI_F(mi_same)(a, b)
+#endif
+
 /* The documented results: a prepared phase function equals the unprepared
  * one of its kind "to a few ulps" (the density's rounding order differs,
  * the sampler's stop may land one ulp apart): the density to 16 eps
@@ -1138,22 +1152,26 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
         d = MI_CALL(MI_L(mist_phase_eval)(p, s));
         MI_F(mi_check_sdir)("mist_phase_sample_dir", wi, xi2, s, d, o, pdf, on);
     }
+    {   /* the prepared batch forms: the scalar prepared functions, element by
+         * element (MI_BATCH_SAME), and in place */
+        MI_T be[80], bs[80], bi[80] = { 0 };
+        int m = n < 80 ? n : 80;
+        MI_CALL(MI_L(mist_phase_eval_n)(p, u, be, (size_t)m));
+        MI_CALL(MI_L(mist_phase_sample_n)(p, xi, bs, (size_t)m));
+        for (i = 0; i < m; ++i) bi[i] = xi[i];
+        MI_CALL(MI_L(mist_phase_sample_n)(p, bi, bi, (size_t)m));
+        for (i = 0; i < m; ++i) {
+            MI_T e = MI_CALL(MI_L(mist_phase_eval)(p, u[i]));
+            MI_T s = MI_CALL(MI_L(mist_phase_sample)(p, xi[i]));
+            if (!MI_BATCH_SAME(be[i], e))
+                MI_PFAIL("mist_phase_eval_n: not the scalar result", u[i], be[i], e);
+            if (!MI_BATCH_SAME(bs[i], s) || !MI_BATCH_SAME(bi[i], s))
+                MI_PFAIL("mist_phase_sample_n: not the scalar result", xi[i], bs[i], s);
+        }
+    }
 #undef MI_PFAIL
 }
 
-/* Batch forms: each element equals the scalar function's (the checked
- * wrappers), bit for bit (documented: the same kernels); in place
- * (in == out) too.  Where the target has FMA (__FP_FAST_FMA) a compiler
- * may contract (-ffp-contract=fast, the O3 variant) the vectorised batch
- * and the scalar function differently: measured 1 ulp apart
- * (mist_draine_eval_n, gcc 12 -O3 -march=native), so there "the same"
- * is 4 eps (relative; told to the coordinator). */
-#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
-#  define MI_BATCH_SAME(a, b) (MI_F(mi_same)(a, b) || (MI_ISFIN(a) && MI_ISFIN(b) \
-                                && fabsl((mi_w)(a) - (b)) <= 4 * MI_EPS * fabsl((mi_w)(b))))
-#else
-#  define MI_BATCH_SAME(a, b) MI_F(mi_same)(a, b)
-#endif
 MI_INLINE void MI_F(mi_batch)(MI_T g, MI_T a, const MI_T *in, int n)
 {
     MI_T out[8][80], buf[80];
