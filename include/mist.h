@@ -1905,8 +1905,8 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             uw = MIST__WFN(mist__draine_step)(gw, fin, aw, (MIST__W)xi, (MIST__W)st,
                                               (MIST__W)tab[2 * MIST__PHASE_K + 2 + k],
                                               (MIST__W)MIST__EPS / 64, &ok, &eb);
-            uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);
             w = 2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512);
+            uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);   /* as mist__draine_sample */
             lo = (MIST__T)(uw - w); hi = (MIST__T)(uw + w);
             y_[j_] = lo;
             f_[j_] = (unsigned char)!(ok && lo == hi);,
