@@ -105,8 +105,9 @@
  *   float HG and Rayleigh samplers (one straight-line form in double) are
  *   vectorised.  The unprepared Draine sampler (iterations) and the double
  *   HG and Rayleigh samplers (long double inside, where it is wider than
- *   double) are plain loops, as fast as the scalar calls, not faster.  Prepared: mist_phase_eval_n(&ph, u[], out[], n)
- *   and mist_phase_sample_n (float: _nf) equal mist_phase_eval and
+ *   double) are plain loops, as fast as the scalar calls, not faster.
+ *   Prepared: mist_phase_eval_n(&ph, u[], out[], n) and
+ *   mist_phase_sample_n (float: _nf) equal mist_phase_eval and
  *   mist_phase_sample element by element; in float the Draine and
  *   Cornette-Shanks samples are vectorised (the start table and one
  *   straight-line Newton step a block; the few elements that need more go
@@ -134,7 +135,8 @@
  *          not inline a function with other floating-point flags into a
  *          fast-math caller, so every mist call stays a call: 1x to 3.5x
  *          the time per call of a plain -O2 build (bench/mist_bench.c:
- *          the cheap ones most, mist_hg_samplef 3.5x, mist_fog_evalf 2.8x,
+ *          the cheap ones most, mist_hg_samplef 3.5x (measured before its
+ *          one-form rewrite; not measured since), mist_fog_evalf 2.8x,
  *          mist_hg_evalf 2.2x; the iterative samplers 1.0x to 1.1x); the
  *          batch forms vectorise and take 0.3x to 1.1x.
  *   clang  #pragma float_control(precise, on): inlined, no slower than

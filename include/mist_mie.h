@@ -1151,7 +1151,9 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
         nodes = (nodes + 7) / 8 * 8;
         h = (t1 - t0) / (double)(nodes / 8);
         a.r_min = r0; a.r_max = rmax;
-        for (i = 0; i < nodes; ++i) {          /* the largest weight, for the scale */
+        for (i = 0; i < nodes; ++i) {          /* the largest weight, for the scale
+                                                  (again below: a log and an exp a
+                                                  node, beside a Mie sphere a node) */
             double lw = mist_mie__node(dist, logv, t0, h, i, &r);
             if (lw > lwmax) lwmax = lw;
         }

@@ -30,49 +30,35 @@ static double ulp_f(float x)  { x = fabsf(x); return (double)(nextafterf(x, INFI
 /* 1: sample through the prepared phase functions (mist_phase_*) instead */
 static int use_prep = 0;
 
-static double sample_d(int kind, double g, double a, double xi)
-{
-    if (use_prep) {     /* the last one prepared, kept (preparing costs ~128 samples) */
-        static mist_phase p;
-        static int pk = -1;
-        static double pg, pa;
-        if (pk != kind || !(pg == g) || !(pa == a)) {
-            p = kind == KIND_HG ? mist_phase_hg(g)
-              : kind == KIND_DRAINE ? mist_phase_draine(g, a)
-              : kind == KIND_CS ? mist_phase_cs(g) : mist_phase_rayleigh();
-            pk = kind; pg = g; pa = a;
-        }
-        return mist_phase_sample(&p, xi);
-    }
-    switch (kind) {
-    case KIND_HG:     return mist_hg_sample(g, xi);
-    case KIND_DRAINE: return mist_draine_sample(g, a, xi);
-    case KIND_CS:     return mist_cs_sample(g, xi);
-    default:          return mist_rayleigh_sample(xi);
-    }
+/* sample_d, sample_f: one definition for both types (T, its suffix S);
+ * with use_prep the last phase function prepared is kept (preparing costs
+ * ~128 samples) */
+#define CAT_(a, b) a##b
+#define CAT(a, b) CAT_(a, b)
+#define DEFINE_SAMPLE(T, S, NAME)                                                  \
+static T NAME(int kind, T g, T a, T xi)                                           \
+{                                                                                  \
+    if (use_prep) {                                                                \
+        static CAT(mist_phase, S) p;                                               \
+        static int pk = -1;                                                        \
+        static T pg, pa;                                                           \
+        if (pk != kind || !(pg == g) || !(pa == a)) {                              \
+            p = kind == KIND_HG ? CAT(mist_phase_hg, S)(g)                         \
+              : kind == KIND_DRAINE ? CAT(mist_phase_draine, S)(g, a)              \
+              : kind == KIND_CS ? CAT(mist_phase_cs, S)(g) : CAT(mist_phase_rayleigh, S)(); \
+            pk = kind; pg = g; pa = a;                                             \
+        }                                                                          \
+        return CAT(mist_phase_sample, S)(&p, xi);                                  \
+    }                                                                              \
+    switch (kind) {                                                                \
+    case KIND_HG:     return CAT(mist_hg_sample, S)(g, xi);                        \
+    case KIND_DRAINE: return CAT(mist_draine_sample, S)(g, a, xi);                 \
+    case KIND_CS:     return CAT(mist_cs_sample, S)(g, xi);                        \
+    default:          return CAT(mist_rayleigh_sample, S)(xi);                     \
+    }                                                                              \
 }
-
-static float sample_f(int kind, float g, float a, float xi)
-{
-    if (use_prep) {
-        static mist_phasef p;
-        static int pk = -1;
-        static float pg, pa;
-        if (pk != kind || !(pg == g) || !(pa == a)) {
-            p = kind == KIND_HG ? mist_phase_hgf(g)
-              : kind == KIND_DRAINE ? mist_phase_drainef(g, a)
-              : kind == KIND_CS ? mist_phase_csf(g) : mist_phase_rayleighf();
-            pk = kind; pg = g; pa = a;
-        }
-        return mist_phase_samplef(&p, xi);
-    }
-    switch (kind) {
-    case KIND_HG:     return mist_hg_samplef(g, xi);
-    case KIND_DRAINE: return mist_draine_samplef(g, a, xi);
-    case KIND_CS:     return mist_cs_samplef(g, xi);
-    default:          return mist_rayleigh_samplef(xi);
-    }
-}
+DEFINE_SAMPLE(double, , sample_d)
+DEFINE_SAMPLE(float, f, sample_f)
 
 /* the (g, alpha) the reference must use for each kind; alpha = +inf (the
  * limit HG u^2) as 1e900, beyond which no double or float xi can tell */
@@ -240,12 +226,23 @@ static void test_monotone(void)
  * less than a float ulp over very many xi, so runs of adjacent floats
  * around the xi of each of the first 24 midpoints above -1 and below +1
  * (found by bisection on the double sampler), g up to 1 - 2^-24: they
- * straddle every midpoint with 3000 xi on either side. */
+ * straddle every midpoint with 3000 xi on either side.  Negative control:
+ * the same scan of a sampler whose double value carries an error of 1e-13
+ * that alternates with the last bit of xi (the size of the middle form's
+ * error in double, which tests/test_stress.c once caught reordering) must
+ * find decreases. */
+static float noisy_hg(float g, float xi)
+{
+    union { float f; unsigned u; } b;
+    b.f = xi;
+    return (float)(mist_hg_sample(g, xi) + ((b.u & 1) ? 1e-13 : -1e-13));
+}
+
 static void test_monotone_midpoints(void)
 {
     static const float gs[] = { 0, 0.3f, 0.9f, 0.999f, 0.9999f, 1 - 0x1p-20f, 1 - 0x1p-24f,
                                 -0.5f, -0.999f, -(1 - 0x1p-20f) };
-    int ig, m, side, bad = 0, it, k, n = (int)mt_scale(24, 6);
+    int ig, m, side, bad = 0, bad_ctl = 0, it, k, n = (int)mt_scale(24, 6);
     for (ig = 0; ig < (int)(sizeof gs / sizeof *gs) + 1; ++ig) {
         int ray = ig == (int)(sizeof gs / sizeof *gs);          /* last: Rayleigh */
         float g = ray ? 0 : gs[ig];
@@ -263,17 +260,29 @@ static void test_monotone_midpoints(void)
                 x = lo;
                 for (k = 0; k < 3000; ++k) x = nextafterf(x, 0);
                 prev = ray ? mist_rayleigh_samplef(x) : mist_hg_samplef(g, x);
-                for (k = 0; k < 6000; ++k) {
-                    float u;
-                    x = nextafterf(x, 2);
-                    u = ray ? mist_rayleigh_samplef(x) : mist_hg_samplef(g, x);
-                    bad += u < prev;
-                    prev = u;
+                {
+                    float x0 = x, pc = ray ? 0 : noisy_hg(g, x);
+                    for (k = 0; k < 6000; ++k) {
+                        float u;
+                        x = nextafterf(x, 2);
+                        u = ray ? mist_rayleigh_samplef(x) : mist_hg_samplef(g, x);
+                        bad += u < prev;
+                        prev = u;
+                    }
+                    for (k = 0, x = x0; !ray && k < 6000; ++k) {
+                        float u;
+                        x = nextafterf(x, 2);
+                        u = noisy_hg(g, x);
+                        bad_ctl += u < pc;
+                        pc = u;
+                    }
                 }
             }
     }
     mt_check(bad == 0, "float HG / Rayleigh samples monotone across rounding midpoints: "
              "%d decreases", bad);
+    mt_check(bad_ctl > 0, "control: the midpoint scan must see the reordering of a sampler "
+             "with a 1e-13 alternating error (%d decreases)", bad_ctl);
 }
 
 /* The Rayleigh sampler near u = -1 (and +1): u moves by less than an ulp

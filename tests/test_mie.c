@@ -985,7 +985,9 @@ static void test_average_extremes(void)
      * dipole limit, whose x^6 and k^2 both underflowed: phase 0/0).  Its
      * scattering is ~x^4 below the other's: the average is the visible
      * one's, its cross sections times the weight share 1 / (1 + 0.01).
-     * Past LEN_MAX (1e300, the fuzzer's input): EDOMAIN. */
+     * Past LEN_MAX (1e300, the fuzzer's input): EDOMAIN.  Tolerance 1e-14:
+     * the two averages differ by a few roundings of their sums (the second
+     * wavelength's share is ~1e-130 of the first's). */
     d = mist_mie_dist_gamma(0.1, 0.01);
     d.r_min = 0.001; d.r_max = 0.002; d.n_radii = 1;
     w2[0] = mist_mie_wl(0.55, 1, mist_mie_cplx(1.329, 1.25e-7));
@@ -1017,7 +1019,8 @@ static void test_average_extremes(void)
     }
 
     /* (3) weights 1.9e214 (wavelength) x 3.9e137 (table) overflowed the
-     * products: the same as the one radius alone */
+     * products: the same as the one radius alone (normalised weights 1 and
+     * rho = 1 in both: the same operations; 1e-15 allows one rounding) */
     {
         static const double rr[2] = {74.3, 2.6}, tw[2] = {3.9e137, 0};
         w2[0] = mist_mie_wl(0.798, 1.9e214, mist_mie_cplx(1.329, 1.26e-7));
@@ -1114,6 +1117,26 @@ static void test_average_extremes(void)
                      a.volume);
         }
     }
+    /* a law's given range and radius at the edges: r_min = 0 or LEN_MIN and
+     * r_max = LEN_MAX in; r_min one ulp below LEN_MIN (not 0), r_max one ulp
+     * above LEN_MAX, r_g one ulp below LEN_MIN out */
+    w2[0] = mist_mie_wl(1e29, 1, mist_mie_cplx(1.33, 0));
+    for (k = 0; k < 6; ++k) {
+        int want = k < 3 ? MIST_MIE_OK : MIST_MIE_EDOMAIN;
+        d = mist_mie_dist_gamma(1e29, 0.1);
+        d.r_min = k == 0 ? 0 : (k == 1 || k == 4 ? MIST_MIE_LEN_MIN
+                                : k == 2 ? 1e28 : nextafter(MIST_MIE_LEN_MIN, 0));
+        d.r_max = k == 4 ? nextafter(MIST_MIE_LEN_MAX, INFINITY) : MIST_MIE_LEN_MAX;
+        d.n_radii = 16;
+        if (k == 5) {
+            d = mist_mie_dist_lognormal(nextafter(MIST_MIE_LEN_MIN, 0), 1.5);
+            w2[0].lambda = 1e-29;
+        }
+        a = mist_mie_average(&d, w2, 1, 1, NULL, 0, NULL);
+        mt_check(a.status == want && (want != MIST_MIE_OK || (a.c_sca > 0 && a.volume > 0)),
+                 "average: law range edge case %d: status %d (want %d)", k, a.status, want);
+    }
+
     /* a law whose automatic range ends past LEN_MAX: EDOMAIN; one at LEN_MIN: fine */
     d = mist_mie_dist_gamma(MIST_MIE_LEN_MAX, 0.1);
     w2[0] = mist_mie_wl(1e29, 1, mist_mie_cplx(1.33, 0));
