@@ -377,6 +377,15 @@ static double n_draine_evalf(void) NCALL(float, mist_draine_eval_nf(0.5f, 17.f, 
 static double n_draine_eval(void)  NCALL(double, mist_draine_eval_n(0.5, 17., ud, out_double, N))
 static double n_draine_samplef(void) NCALL(float, mist_draine_sample_nf(0.5f, 17.f, xf, out_float, N))
 static double n_draine_sample(void)  NCALL(double, mist_draine_sample_n(0.5, 17., xd, out_double, N))
+/* the same in batches of MIST_DRAINE_PREPARE_N (1024), each prepared anew */
+#define STR_(x) #x
+#define STR(x) STR_(x)
+#define NCHUNK(T, CALL) { int c; for (c = 0; c < N; c += MIST_DRAINE_PREPARE_N) { CALL; } \
+                          return (double)out_##T[N / 2]; }
+static double n_draine_samplef_chunk(void)
+    NCHUNK(float, mist_draine_sample_nf(0.5f, 17.f, xf + c, out_float + c, MIST_DRAINE_PREPARE_N))
+static double n_draine_sample_chunk(void)
+    NCHUNK(double, mist_draine_sample_n(0.5, 17., xd + c, out_double + c, MIST_DRAINE_PREPARE_N))
 static double n_phase_dr_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_drf, xf, out_float, N))
 static double n_phase_dr_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_drf, uf, out_float, N))
 static double n_phase_dr_sample(void) NCALL(double, mist_phase_sample_n(&ph_dr, xd, out_double, N))
@@ -438,8 +447,12 @@ static void batch_rows(void)
     row_speedup("mist_hg_sample_n (long double)", n_hg_sample, b_hg_sample);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
-    row_speedup("mist_draine_sample_nf (loop)", n_draine_samplef, b_draine_samplef);
-    row_speedup("mist_draine_sample_n  (loop)", n_draine_sample, b_draine_sample);
+    row_speedup("mist_draine_sample_nf (prepares once)", n_draine_samplef, b_draine_samplef);
+    row_speedup("mist_draine_sample_n  (prepares once)", n_draine_sample, b_draine_sample);
+    row_speedup("mist_draine_sample_nf (n = " STR(MIST_DRAINE_PREPARE_N) " each)",
+                n_draine_samplef_chunk, b_draine_samplef);
+    row_speedup("mist_draine_sample_n  (n = " STR(MIST_DRAINE_PREPARE_N) " each)",
+                n_draine_sample_chunk, b_draine_sample);
     row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
     row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
                 b_phase_draine_samplef);

@@ -10,7 +10,9 @@
  * input of DOMAIN AND BAD INPUT (NaN, +-inf, +-0, +-1 and their neighbours,
  * u = g for the Dirac limit); parameters g and alpha the same (|g| = 1,
  * |g| > 1, NaN, alpha = 0, +inf, negative, NaN); lengths 0 (NULL arrays),
- * 1, 15, 16, 17, 31, 32, 33 (the block is 32), 100 and 1000; in place; and
+ * 1, 15, 16, 17, 31, 32, 33 (the block is 32), 100, 1023, 1024 (from
+ * MIST_DRAINE_PREPARE_N = 1024 on, the unprepared Draine batch sampler is
+ * the prepared one's: compared with mist_phase_sample) and 1100; in place; and
  * no element past n is written.  Built twice by CMake: with the project's
  * flags and with -march=native -fno-math-errno (so that the vectorised
  * code is what is compared).  The comparison is by bits (a -0 for a +0 or
@@ -21,7 +23,7 @@
 
 #include <string.h>
 
-#define NMAX 1000
+#define NMAX 1100
 
 /* Where the hardware fuses a*b+c (FP_FAST_FMA), a compiler allowed to
  * contract (-ffp-contract=fast: gcc's default outside the ISO modes, the
@@ -41,7 +43,8 @@
 static const double g_list[] = { 0, 0.3, -0.3, 0.8, -0.95, 0.999, -0.9999, 1e-6, -1e-6,
                                   1, -1, 1.5, -7, NAN, INFINITY };
 static const double a_list[] = { 0, 1e-7, 1, 17, 250, 1e4, 1e9, INFINITY, -1, NAN };
-static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, NMAX };
+static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PREPARE_N - 1,
+                              MIST_DRAINE_PREPARE_N, NMAX };
 
 enum { HG_EVAL, HG_SAMPLE, DR_EVAL, DR_SAMPLE, RL_EVAL, RL_SAMPLE, PD_EVAL, PD_SAMPLE,
        PH_SAMPLE, NKIND };
@@ -80,9 +83,11 @@ static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      
     return &p;                                                                    \
 }                                                                                 \
                                                                                   \
-/* the scalar function of kind k */                                               \
-static T scalar_##T(int k, T g, T a, T x)                                        \
+/* the scalar function of kind k for a batch of n (the unprepared Draine  */   \
+/* batch of n >= MIST_DRAINE_PREPARE_N is the prepared sampler's)           */   \
+static T scalar_##T(int k, T g, T a, T x, int n)                                 \
 {                                                                                 \
+    if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N) k = PD_SAMPLE;              \
     switch (k) {                                                                  \
     case PD_EVAL:   return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
     case PD_SAMPLE: case PH_SAMPLE:                                               \
@@ -134,7 +139,7 @@ static void check_##T(int k, T g, T a, mt_rng *r)                               
     for (ni = 0; ni < sizeof n_list / sizeof n_list[0]; ++ni) {                   \
         int n = n_list[ni], i, bad = -1;                                          \
         inputs_##T(k, g, r, in, n);                                               \
-        for (i = 0; i < n; ++i) ref[i] = scalar_##T(k, g, a, in[i]);             \
+        for (i = 0; i < n; ++i) ref[i] = scalar_##T(k, g, a, in[i], n);             \
         for (i = 0; i < n + GUARD; ++i) out[i] = (T)12345;                        \
         batch_##T(k, g, a, in, out, (size_t)n);                                   \
         for (i = 0; i < n && bad < 0; ++i) if (!same_##T(out[i], ref[i])) bad = i; \
