@@ -9,7 +9,9 @@
  *     vector against vector; the batch forms against a loop of scalar calls;
  *   - the object-code size of a translation unit using one function
  *     (bench/size_one.c) against one using everything (bench/size_all.c),
- *     built by CMake at this benchmark's flags (MIST_BENCH_FLAGS, printed).
+ *     built by CMake at this benchmark's flags (MIST_BENCH_FLAGS, printed);
+ *   - the double samplers as built without a wider long double
+ *     (bench/nold.c, MIST_NO_LONG_DOUBLE: MSVC, ARM Macs, CUDA).
  * Each figure: median of 15 timed repetitions (after a warm-up) over a
  * stream of 4096 random inputs, with the spread (min..max of the
  * repetitions).  Run: ./build/mist_bench  (see README.md). */
@@ -59,23 +61,7 @@ static double measure(bench_fn f, double *lo, double *hi)
     return t[REPS / 2];
 }
 
-/* A scalar figure is the cost of one call: each result is stored (no sum
- * whose add chain would bound the loop), and NOVEC, an empty asm that
- * claims to change the value, keeps the compiler from vectorising the loop,
- * for mist and for the baselines alike (a vectorised baseline beside a
- * scalar mist call was the old eq. 3 row: 0.68 ns).  The batch rows below
- * compare vector code with vector code.  Where NOVEC is empty (not gcc or
- * clang on x86-64 or AArch64) the output says so. */
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
-#  define NOVEC(v) __asm__("" : "+x"(v))
-#  define NOVEC_OK 1
-#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
-#  define NOVEC(v) __asm__("" : "+w"(v))
-#  define NOVEC_OK 1
-#else
-#  define NOVEC(v) ((void)0)
-#  define NOVEC_OK 0
-#endif
+#include "bench.h"   /* NOVEC: see there */
 static float  out_float[N];
 static double out_double[N];
 #define LOOP(T, EXPR) { int i; for (i = 0; i < N; ++i) { T v_ = EXPR; NOVEC(v_); \
@@ -103,6 +89,14 @@ static double b_cs_samplef(void)       LOOP(float, mist_cs_samplef(0.7f, xf[i]))
 static double b_eq6f_cs(void)          LOOP(float, draine_eq6f(0.7f, 1.f, xf[i]))
 static double b_rayleigh_samplef(void) LOOP(float, mist_rayleigh_samplef(xf[i]))
 static double b_rayleigh_sample(void)  LOOP(double, mist_rayleigh_sample(xd[i]))
+/* the double samplers without a wider long double (bench/nold.c) */
+static double b_hg_sample_nold(void)  { return nold_hg_sample(0.8, xd, out_double, N); }
+static double b_hg_sample_nold5(void) { return nold_hg_sample(0.5, xd, out_double, N); }
+static double b_hg_sample_nold3(void) { return nold_hg_sample(0.3, xd, out_double, N); }
+static double b_hg_sample_nold1(void) { return nold_hg_sample(0.1, xd, out_double, N); }
+static double n_hg_sample_nold(void)  { return nold_hg_sample_n(0.8, xd, out_double, N); }
+static double b_draine_sample_nold(void) { return nold_draine_sample(0.5, 17., xd, out_double, N); }
+static double b_rayleigh_sample_nold(void) { return nold_rayleigh_sample(xd, out_double, N); }
 static double b_fog_samplef(void)
 {
     mist_fogf fog = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
@@ -421,6 +415,10 @@ static void hg_target_rows(void)
     b = measure(b_bare_sample, &lo, &hi);
     row("eq. 3 HG sample (double, scalar)", b_bare_sample, NULL, 0);
     row("mist_hg_sample", b_hg_sample, "eq. 3", b);
+    row("mist_hg_sample (no long double)", b_hg_sample_nold, "eq. 3", b);
+    row("  the same at g .5", b_hg_sample_nold5, "eq. 3", b);
+    row("  the same at g .3", b_hg_sample_nold3, "eq. 3", b);
+    row("  the same at g .1", b_hg_sample_nold1, "eq. 3", b);
     b = measure(v_bare_evalf, &lo, &hi);
     row("bare HG eval (float, vector)", v_bare_evalf, NULL, 0);
     row("mist_hg_eval_nf", n_hg_evalf, "bare", b);
@@ -433,6 +431,7 @@ static void hg_target_rows(void)
     b = measure(v_bare_sample, &lo, &hi);
     row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, 0);
     row("mist_hg_sample_n", n_hg_sample, "eq. 3", b);
+    row("mist_hg_sample_n (no long double)", n_hg_sample_nold, "eq. 3", b);
     b = measure(v_eq6f, &lo, &hi);
     row("eq. 6 Draine sample (float, array)", v_eq6f, NULL, 0);
     row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "eq. 6", b);
@@ -445,6 +444,7 @@ static void batch_rows(void)
     row_speedup("mist_hg_eval_n", n_hg_eval, b_hg_eval);
     row_speedup("mist_hg_sample_nf", n_hg_samplef, b_hg_samplef);
     row_speedup("mist_hg_sample_n (long double)", n_hg_sample, b_hg_sample);
+    row_speedup("mist_hg_sample_n (no long double)", n_hg_sample_nold, b_hg_sample_nold);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
     row_speedup("mist_draine_sample_nf (prepares once)", n_draine_samplef, b_draine_samplef);
@@ -562,6 +562,7 @@ int main(void)
     row("eq. 6 Draine as printed (double)", b_eq6, "eq. 6 float", base);
     row("mist_draine_samplef (g .5, a 17)", b_draine_samplef, "eq. 6 float", base);
     row("mist_draine_sample  (g .5, a 17)", b_draine_sample, "eq. 6 float", base);
+    row("  the same, no long double", b_draine_sample_nold, "eq. 6 float", base);
     base = measure(b_eq6f_250, &lo, &hi);
     row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, 0);
     row("mist_draine_samplef (g .1, a 250)", b_draine_samplef_250, "eq. 6 float", base);
@@ -571,6 +572,7 @@ int main(void)
     row("Rayleigh sample, float arithmetic only", b_rayleigh_floatonly, NULL, 0);
     row("mist_rayleigh_samplef (double inside)", b_rayleigh_samplef, "float only", base);
     row("mist_rayleigh_sample", b_rayleigh_sample, NULL, 0);
+    row("mist_rayleigh_sample (no long double)", b_rayleigh_sample_nold, NULL, 0);
     row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, 0);
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, 0);
     prepared_rows();

@@ -40,7 +40,13 @@
  *   per type (see "The passes" below).  The float functions compute in float
  *   and finish the samplers in double, the double ones finish in long double
  *   where it is wider (x86): in the type alone they would miss the accuracy
- *   bar by up to 1.7x (measured; each sampler section says so).
+ *   bar by up to 1.7x (measured; each sampler section says so).  Where long
+ *   double is no wider than double (MSVC, ARM Macs, CUDA device code; or
+ *   MIST_NO_LONG_DOUBLE) the double samplers run in double: HG and Rayleigh
+ *   within the bar, Draine and Cornette-Shanks within 2x of it (5x for
+ *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
+ *   or two below the one before; tests/test_accuracy.c counts them, built as
+ *   test_accuracy_nold).  Float is the same everywhere.
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
@@ -65,6 +71,10 @@
  *                 __host__ __device__ under nvcc, so kernels can call them).
  *   MIST_ALLOW_FAST_MATH  compile mist with the includer's fast-math flags
  *                 instead of guarding against them (see FAST MATH).
+ *   MIST_NO_LONG_DOUBLE  run the double samplers in double even where long
+ *                 double is wider: what MSVC, ARM Macs and CUDA device code
+ *                 get (see above); HG sampling 1-3x eq. 3 instead of ~4x
+ *                 (README "Speed"), for those bars and no monotonicity.
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -108,7 +118,8 @@
  *   float HG and Rayleigh samplers (one straight-line form in double) are
  *   vectorised.  The double HG and Rayleigh samplers (long double inside,
  *   where it is wider than double) are plain loops, as fast as the scalar
- *   calls, not faster.  The unprepared Draine sampler is a loop below
+ *   calls, not faster; without it (MIST_NO_LONG_DOUBLE) the double HG
+ *   sampler is vectorised with AVX (both of its stages for every element).  The unprepared Draine sampler is a loop below
  *   MIST_DRAINE_PREPARE_N (1024) elements; from there on it prepares the
  *   medium once and returns the prepared sampler's values (the one
  *   exception to "bit for bit": the same bar, monotone in xi, but the
@@ -445,7 +456,7 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 /* ------------------------------------------------------------------------ */
 #define MIST__TEMPLATE 1
 
-#if LDBL_MANT_DIG > DBL_MANT_DIG
+#if LDBL_MANT_DIG > DBL_MANT_DIG && !defined(MIST_NO_LONG_DOUBLE)
 #  define MIST__HAVE_LD 1
 #  define MIST__INTERNAL_ONLY 1
 #  define MIST__F     static inline           /* host only: never on a GPU */
@@ -474,10 +485,8 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #if defined(MIST__HAVE_LD) && !defined(__CUDA_ARCH__)
 #  define MIST__W      long double
 #  define MIST__WFN(n) n##l
-#  define MIST__W_SCALAR 1      /* no vector arithmetic: batch forms loop */
 #endif
 #include "mist.h"
-#undef MIST__W_SCALAR
 #undef MIST__T
 #undef MIST__FN
 #undef MIST__M
@@ -616,6 +625,26 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* float functions need less: in double one form, 1 - nb/D^2, is accurate   */
 /* enough everywhere (mist__hg_one: one division, no branch, vectorisable;  */
 /* measured 0.125x the float bar).                                          */
+/*                                                                          */
+/* WITHOUT A WIDER TYPE (double where long double is no wider: MSVC, ARM    */
+/* Macs, CUDA device code, or MIST_NO_LONG_DOUBLE) the three forms in       */
+/* double miss the bar by 1.1x near u = -1/2 at small |g|.  There mist      */
+/* takes forms that keep precision in double (mist__hg_dbl):                */
+/*   |g| <= 1/4:  u = (2 xi - 1) + 2 g xi (1-xi) (3 - g^2 + 2 g (2xi-1))/D^2 */
+/*     (u minus the isotropic answer, multiplied out: the correction is     */
+/*     O(g), so its relative error costs little, and 2 xi - 1 is exact for */
+/*     xi >= 1/4; one division, no branch);                                 */
+/*   else (mirrored to g > 0) the form for 1 - u where it gives u > 3/8,    */
+/*     else a second division: the one for 1 + u where u < -1/2, the form   */
+/*     above where xi >= 1/4, the middle form below.                        */
+/* Measured against the float128 inversion: 0.37x the bar for |g| <= 1/4,  */
+/* 0.74x above (2.6e5 random g, xi each; tests/test_accuracy.c checks it    */
+/* with MIST_NO_LONG_DOUBLE).  Cost 0.8-1.6x eq. 3 in double (g .99 to .3:  */
+/* the branch on u mispredicts), against ~4x for the long double forms.     */
+/* But with errors of an ulp or two these are not monotone in adjacent xi: */
+/* 0.01-2.5% of adjacent double pairs come out reversed (g .1 to .8;        */
+/* measured over 1e7 each).  Monotone and within the bar would need ~11     */
+/* more bits (long double, or double-double at ~5x the operations).        */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -684,32 +713,46 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y
     return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
 }
 
-/* THE SAME, BRANCH-FREE, for the batch forms (gcc and clang vectorise only
- * a body without branches).  The forms are blended: with lo, hi in {0, 1}
- * (u < -1/2, u > +1/2) the numerator  na lo + nb hi + nm (1 - lo - hi)  is
- * divided once, and  u = q (1 - 2 hi) + (hi - lo)  is na/D^2 - 1,
- * 1 - nb/D^2 or nm/D^2 exactly (every product by 0 or 1 is exact); the
- * mirror g < 0 likewise with neg in {0, 1}.  The 0 and 1 come in as z and
- * one, read from a volatile by the caller: gcc -O2 threads jumps through
- * literal constants, duplicates the division into branches and then
- * refuses to vectorise (it may trap).  tests/test_batch.c checks that the
- * results are mist__hg_sample's, bit for bit.  ga = |g| < 1. */
-MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_sample_k)(MIST__T ga, MIST__T neg, MIST__T xi,
-                                            MIST__T z, MIST__T one)
+#if !defined(MIST__W)
+/* WITHOUT A WIDER TYPE (see the section comment): |g| <= 1/4, xi in [0, 1] */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_near)(MIST__T g, MIST__T x)
 {
-    MIST__T x = neg * (one - xi) + (one - neg) * xi;
-    MIST__T y = neg * xi + (one - neg) * (one - xi);
-    MIST__T na, nb, d2, ea, omg, nm, lo, hi, q, u;
-    MIST__FN(mist__hg_terms)(ga, x, y, &na, &nb, &d2, &ea, &omg);
-    nm = MIST__FN(mist__hg_mid)(ga, x, ea, omg);
-    lo = MIST__C(3) * na < nb ? one : z;
-    hi = MIST__C(3) * nb < na ? one : z;
-    q = (na * lo + nb * hi + nm * (one - lo - hi)) / d2;
-    u = (q * (one - MIST__C(2) * hi) + (hi - lo)) * (one - MIST__C(2) * neg);
-    return u < -one ? -one : (u > one ? one : u);
+    MIST__T y = MIST__C(1) - x, t = MIST__C(2) * x - MIST__C(1);
+    MIST__T d = (MIST__C(1) - g) + MIST__C(2) * g * x;
+    return t + MIST__C(2) * g * x * y * (MIST__C(3) - g * g + MIST__C(2) * g * t) / (d * d);
 }
 
-/* xi clamped to [0, 1] (z = 0, one = 1: see mist__hg_sample_k), NaN -> 0. */
+/* g in (1/4, 1), x = xi, y = 1 - xi (mirrored by the caller): the form for
+ * 1 - u, and D^2 in *d2 for the second stage */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_far)(MIST__T g, MIST__T x, MIST__T y, MIST__T *d2)
+{
+    MIST__T omg = MIST__C(1) - g, d = omg + MIST__C(2) * g * x;
+    *d2 = d * d;
+    return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / *d2;
+}
+
+/* the second stage, where the far form u1 <= 3/8: the form for 1 + u where
+ * u1 < -1/2, the near form's algebra for xi >= 1/4, else the middle form,
+ * picked by factors z = 0 and one = 1 (exact), read from a volatile by the
+ * callers: with literal constants gcc turns the selects into unpredictable
+ * branches (and then will not vectorise the batch form) */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_rest)(MIST__T g, MIST__T x, MIST__T y, MIST__T d2,
+                                                  MIST__T u1, MIST__T z, MIST__T one)
+{
+    MIST__T omg = MIST__C(1) - g, opg = MIST__C(1) + g, ea = omg + g * x;
+    MIST__T t = MIST__C(2) * x - MIST__C(1);
+    MIST__T na = MIST__C(2) * x * (opg * opg) * ea;
+    MIST__T nd = MIST__C(2) * g * x * y * (MIST__C(3) - g * g + MIST__C(2) * g * t);
+    MIST__T nm = MIST__C(2) * x * (MIST__C(1) + g * g) * ea - omg * omg;
+    MIST__T lo = u1 < MIST__C(-0.5) ? one : z;
+    MIST__T hx = x >= MIST__C(0.25) ? one - lo : z;
+    return (hx * t - lo) + (lo * na + hx * nd + (one - lo - hx) * nm) / d2;
+}
+
+#endif
+
+/* xi clamped to [0, 1] (z = 0, one = 1, read from a volatile by the batch
+ * forms: see mist_hg_sample_n), NaN -> 0. */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp01)(MIST__T xi, MIST__T z, MIST__T one)
 {
     xi = xi > z ? xi : z;               /* two selects, not nested: max, min */
@@ -740,7 +783,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* <= 1.9e-3), then two Halley steps (cubic convergence: ~1e-8, then        */
 /* rounding): measured <= 3.2 ulps of v in the type it runs in over 2e4     */
 /* random x.  No branch, no libm call: the float batch form vectorises.    */
-/* Double evaluates it in long double, float in double (as HG).            */
+/* Double evaluates it in long double, float in double (as HG).  Without a  */
+/* wider long double, double in double: within the bar (test_accuracy_nold) */
+/* but not monotone in adjacent xi.                                         */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2] */
@@ -846,9 +891,26 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 }
 #endif
 
+#if !defined(MIST__W)
+/* the double sampler without a wider type: sanitised |g| < 1, xi in [0, 1] */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
+{
+    volatile MIST__T z0 = 0;            /* see mist__hg_rest */
+    MIST__T ga = g < MIST__C(0) ? -g : g, x, y, d2, u;
+    if (ga <= MIST__C(0.25)) return MIST__FN(mist__clamp11)(MIST__FN(mist__hg_near)(g, xi));
+    x = g < MIST__C(0) ? MIST__C(1) - xi : xi;
+    y = g < MIST__C(0) ? xi : MIST__C(1) - xi;
+    u = MIST__FN(mist__hg_far)(ga, x, y, &d2);
+    if (!(u > MIST__C(0.375))) u = MIST__FN(mist__hg_rest)(ga, x, y, d2, u, z0, z0 + 1);
+    u = MIST__FN(mist__clamp11)(u);
+    return g < MIST__C(0) ? -u : u;
+}
+#endif
+
 /* The HG sample at sanitised |g| < 1, xi in [0, 1]: float in double by the
  * one form (mist__hg_one), double by the three forms in long double (0.5
- * ulp instead of up to 4.4 in double, measured), else in T. */
+ * ulp instead of up to 4.4 in double, measured), or without a wider type
+ * by mist__hg_dbl. */
 MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
@@ -858,7 +920,7 @@ MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 #elif defined(MIST__W)
     return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
 #else
-    return MIST__FN(mist__hg_sample)(g, xi);
+    return MIST__FN(mist__hg_dbl)(g, xi);
 #endif
 }
 
@@ -916,7 +978,8 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* no wider than double (MSVC, ARM Macs, CUDA device code) the double       */
 /* samplers skip the wide steps: within 2x the bar (1.75x measured) for     */
 /* alpha <= 1e4, up to 5x (4.8x measured) for alpha > 1e4, |g| <= 1e-3 and  */
-/* xi within a few ulps of F(0), where F is flat to third order.            */
+/* xi within a few ulps of F(0), where F is flat to third order; and not    */
+/* monotone in adjacent xi (tests/test_accuracy.c as test_accuracy_nold).   */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
@@ -1711,8 +1774,9 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* sanitised once.  The work goes in blocks of MIST__BLK into local arrays: */
 /* the block loop has a constant trip count, no aliasing (so in == out is   */
 /* allowed) and a branch-free body, which gcc's -O2 "very cheap" cost model */
-/* and clang vectorise.  The unprepared Draine sampler (iterations) and the */
-/* samplers in long double are plain loops over the scalar function.        */
+/* and clang vectorise.  The unprepared Draine sampler (iterations, below   */
+/* MIST_DRAINE_PREPARE_N) and the samplers in long double are plain loops   */
+/* over the scalar function.                                                */
 /* ======================================================================== */
 
 /* 32: gcc -O3 completely unrolls loops of up to 16 iterations before it
@@ -1777,7 +1841,7 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
     }
 #if defined(MIST__W_EXACT)
     {   /* float: the one form in double, branch-free (mist__hg_one); the 0
-         * and 1 of the clamp at run time (see mist__hg_sample_k) */
+         * and 1 of the clamp at run time (see below) */
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1;
         MIST__W gw = (MIST__W)g < 0 ? -(MIST__W)g : (MIST__W)g;
@@ -1789,28 +1853,32 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
                          y_[j_] = -(MIST__T)MIST__WFN(mist__hg_one)(gw, 1 - x, x))
         }
     }
-#elif defined(MIST__W_SCALAR) || !defined(__AVX__)
+#elif defined(MIST__W) || !defined(__AVX__)
     /* long double has no vectors; and with 2 doubles a vector (SSE2, NEON)
-     * the blended body is slower than the branches (measured: 5.8 against
-     * 4.2 ns per element, gcc 12 -O2, SSE2): loop over the scalar function */
+     * the second stage's division for every element costs more than the
+     * branch saves: loop over the scalar function */
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(g, in[i]);
 #else
-    {   /* as mist_hg_sample, in the wide type where there is one; the 0
-         * and 1 at run time (see mist__hg_sample_k) */
-#ifdef MIST__W
-#  define MIST__HW  MIST__W
-#  define MIST__HFN MIST__WFN
-#else
-#  define MIST__HW  MIST__T
-#  define MIST__HFN MIST__FN
-#endif
-        volatile MIST__HW z0 = 0;       /* a zero no compiler can fold */
-        MIST__HW gw = (MIST__HW)g, z = z0, one = z + 1;
-        MIST__HW ga = gw < z ? -gw : gw, neg = gw < z ? one : z;
-        MIST__BLOCKS(MIST__HW x = MIST__HFN(mist__clamp01)((MIST__HW)x_[j_], z, one);
-                     y_[j_] = (MIST__T)MIST__HFN(mist__hg_sample_k)(ga, neg, x, z, one))
-#undef MIST__HW
-#undef MIST__HFN
+    {   /* without a wider type (mist__hg_dbl): |g| <= 1/4 one branch-free
+         * form; above, both stages for every element and a select.  The 0
+         * and 1 at run time: gcc -O2 threads jumps through literal
+         * constants, duplicates the division into branches and then will
+         * not vectorise (it may trap). */
+        volatile MIST__T z0 = 0;        /* a zero no compiler can fold */
+        MIST__T z = z0, one = z + 1, ga = g < z ? -g : g, neg = g < z ? one : z;
+        if (ga <= MIST__C(0.25)) {
+            MIST__BLOCKS(MIST__T x = MIST__FN(mist__clamp01)(x_[j_], z, one);
+                         y_[j_] = MIST__FN(mist__clamp11)(MIST__FN(mist__hg_near)(g, x)))
+        } else {
+            MIST__BLOCKS(MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+                         MIST__T x = neg * (one - xi) + (one - neg) * xi;
+                         MIST__T y = neg * xi + (one - neg) * (one - xi);
+                         MIST__T d2; MIST__T u; MIST__T u2;
+                         u = MIST__FN(mist__hg_far)(ga, x, y, &d2);
+                         u2 = MIST__FN(mist__hg_rest)(ga, x, y, d2, u, z, one);
+                         u = MIST__FN(mist__clamp11)(u > MIST__C(0.375) ? u : u2);
+                         y_[j_] = u * (one - MIST__C(2) * neg))
+        }
     }
 #endif
 }
