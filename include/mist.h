@@ -73,8 +73,9 @@
  *                 instead of guarding against them (see FAST MATH).
  *   MIST_NO_LONG_DOUBLE  run the double samplers in double even where long
  *                 double is wider: what MSVC, ARM Macs and CUDA device code
- *                 get (see above); HG sampling 1-3x eq. 3 instead of ~4x
- *                 (README "Speed"), for those bars and no monotonicity.
+ *                 get (see above): HG sampling 1.5-6x the printed eq. 3
+ *                 instead of 4-6x, Rayleigh ~2x faster (README "Speed"),
+ *                 for those bars and no monotonicity.
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -639,8 +640,10 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /*     above where xi >= 1/4, the middle form below.                        */
 /* Measured against the float128 inversion: 0.37x the bar for |g| <= 1/4,  */
 /* 0.74x above (2.6e5 random g, xi each; tests/test_accuracy.c checks it    */
-/* with MIST_NO_LONG_DOUBLE).  Cost 0.8-1.6x eq. 3 in double (g .99 to .3:  */
-/* the branch on u mispredicts), against ~4x for the long double forms.     */
+/* with MIST_NO_LONG_DOUBLE).  Cost (./build/mist_bench, three runs, busy   */
+/* machine): 1.5-2.5x eq. 3 in double at g = 0.1, 2.2-3.5x at 0.8, 3.3-6x   */
+/* at 0.3-0.5 (the branch to the second stage mispredicts), against 4.2-6.3x */
+/* for the long double forms in the same runs.                              */
 /* But with errors of an ulp or two these are not monotone in adjacent xi: */
 /* 0.01-2.5% of adjacent double pairs come out reversed (g .1 to .8;        */
 /* measured over 1e7 each).  Monotone and within the bar would need ~11     */
@@ -733,9 +736,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_far)(MIST__T g, MIST__T x, MIST__T y
 
 /* the second stage, where the far form u1 <= 3/8: the form for 1 + u where
  * u1 < -1/2, the near form's algebra for xi >= 1/4, else the middle form,
- * picked by factors z = 0 and one = 1 (exact), read from a volatile by the
- * callers: with literal constants gcc turns the selects into unpredictable
- * branches (and then will not vectorise the batch form) */
+ * picked by factors z = 0 and one = 1 (exact).  The batch form reads them
+ * from a volatile: with literal constants gcc turns the selects into
+ * branches and then will not vectorise (the scalar sampler, measured, is
+ * faster with the branches: 10 against 12 ns at g = 0.3) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_rest)(MIST__T g, MIST__T x, MIST__T y, MIST__T d2,
                                                   MIST__T u1, MIST__T z, MIST__T one)
 {
@@ -895,13 +899,13 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 /* the double sampler without a wider type: sanitised |g| < 1, xi in [0, 1] */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
 {
-    volatile MIST__T z0 = 0;            /* see mist__hg_rest */
     MIST__T ga = g < MIST__C(0) ? -g : g, x, y, d2, u;
     if (ga <= MIST__C(0.25)) return MIST__FN(mist__clamp11)(MIST__FN(mist__hg_near)(g, xi));
     x = g < MIST__C(0) ? MIST__C(1) - xi : xi;
     y = g < MIST__C(0) ? xi : MIST__C(1) - xi;
     u = MIST__FN(mist__hg_far)(ga, x, y, &d2);
-    if (!(u > MIST__C(0.375))) u = MIST__FN(mist__hg_rest)(ga, x, y, d2, u, z0, z0 + 1);
+    if (!(u > MIST__C(0.375)))          /* (literal 0, 1: branches, faster here) */
+        u = MIST__FN(mist__hg_rest)(ga, x, y, d2, u, MIST__C(0), MIST__C(1));
     u = MIST__FN(mist__clamp11)(u);
     return g < MIST__C(0) ? -u : u;
 }
