@@ -329,7 +329,7 @@ static void prepared_rows(void)
 
 /* The bare formulas in each type: HG [JD23 eq. 2] with V^3 = V^2 sqrt(V^2)
  * (the printed pow is slower), and eq. 3 as printed (with its g ~ 0
- * fallback; the float one is hg_sample_printed). */
+ * fallback: hg_sample_printed and _d, tests/mist_printed.h). */
 static float hg_eval_baref(float g, float u)
 {
     float v2 = 1 + g * g - 2 * g * u;
@@ -340,16 +340,9 @@ static double hg_eval_bare(double g, double u)
     double v2 = 1 + g * g - 2 * g * u;
     return (1 - g * g) * MIST__INV4PI / (v2 * sqrt(v2));
 }
-static double hg_sample_bare(double g, double xi)
-{
-    double t;
-    if (fabs(g) < 1e-3) return 2 * xi - 1;
-    t = (1 - g * g) / (1 - g + 2 * g * xi);
-    return (1 + g * g - t * t) / (2 * g);
-}
 static double b_bare_evalf(void)   LOOP(float, hg_eval_baref(0.8f, uf[i]))
 static double b_bare_eval(void)    LOOP(double, hg_eval_bare(0.8, ud[i]))
-static double b_bare_sample(void)  LOOP(double, hg_sample_bare(0.8, xd[i]))
+static double b_bare_sample(void)  LOOP(double, hg_sample_printed_d(0.8, xd[i]))
 static double b_rayleigh_evalf(void) LOOP(float, mist_rayleigh_evalf(uf[i]))
 static double b_rayleigh_eval(void)  LOOP(double, mist_rayleigh_eval(ud[i]))
 
@@ -359,7 +352,7 @@ static double b_rayleigh_eval(void)  LOOP(double, mist_rayleigh_eval(ud[i]))
 static double v_bare_evalf(void)   VLOOP(float, hg_eval_baref(0.8f, uf[i]))
 static double v_bare_eval(void)    VLOOP(double, hg_eval_bare(0.8, ud[i]))
 static double v_bare_samplef(void) VLOOP(float, hg_sample_printed(0.8f, xf[i]))
-static double v_bare_sample(void)  VLOOP(double, hg_sample_bare(0.8, xd[i]))
+static double v_bare_sample(void)  VLOOP(double, hg_sample_printed_d(0.8, xd[i]))
 
 /* the batch forms over the same inputs */
 #define NCALL(T, CALL) { CALL; return (double)out_##T[N / 2]; }

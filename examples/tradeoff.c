@@ -47,7 +47,9 @@
  * The parameters are variables, not constants: bench/mist_bench.c's
  * constant g lets the compiler fold part of HG (3.3 vs 6.4 ns there).
  *
- * PART 2: the exact Draine samplers (mist_draine_sample[f], and the
+ * PART 2: the exact HG samplers (mist_hg_sample[f]) against eq. 3 as
+ * printed with its eq. 4 fallback, float and double, g in {1e-4, 0.01,
+ * 0.5, 0.9}, the same xi; and the exact Draine samplers (mist_draine_sample[f], and the
  * prepared mist_phase_sample[f], prepared once per (g, alpha) outside the
  * timed loop) against eq. 6 of the supplemental typed in as printed, float
  * and double: max |u - u*| over g in {0.01, 0.1, 0.5,
@@ -365,6 +367,10 @@ static mist_phase  cph;         /* prepared once per job (job_setup) */
 static mist_phasef cphf;
 static double t_prepf(void)  LOOP(float, mist_phase_samplef(&cphf, xbf[i]))
 static double t_prepd(void)  LOOP(double, mist_phase_sample(&cph, xb[i]))
+static double t_hg3f(void)   LOOP(float, hg_sample_printed(cgf, xbf[i]))
+static double t_hg3d(void)   LOOP(double, hg_sample_printed_d(cg, xb[i]))
+static double t_hgf(void)    LOOP(float, mist_hg_samplef(cgf, xbf[i]))
+static double t_hgd(void)    LOOP(double, mist_hg_sample(cg, xb[i]))
 
 /* Timing jobs: a loop and the parameters it reads.  Each is timed as
  * bench/mist_bench.c does: a warm-up, then REPS repetitions in a row, the
@@ -870,7 +876,7 @@ int main(int argc, char **argv)
 
     /* ---- part 2: samplers ------------------------------------------------ */
     {
-        enum { NX = 1006, NI = 6 };
+        enum { NX = 1006, NI = 6, NH = 4 };
         static const char *sname[NI] = { "eq. 6 as printed (float)",
                                          "eq. 6 as printed (double)", "mist float",
                                          "mist double", "mist float, prepared",
@@ -880,6 +886,13 @@ int main(int argc, char **argv)
                                          "mist_phase_samplef (prepared)",
                                          "mist_phase_sample (prepared)" };
         double xs[NX], worst[NI], wg[NI][4], at[NI][3], cost[NI][12], med[NI], lo[NI], hi[NI];
+        double hworst[NH], hwg[NH][4], hat[NH][2], hcost[NH][4], hmed[NH], hlo[NH], hhi[NH];
+        static const double SGH[4] = { 1e-4, 0.01, 0.5, 0.9 };
+        static const char *hname[NH] = { "eq. 3 as printed, float", "eq. 3 as printed, double",
+                                         "mist_hg_samplef", "mist_hg_sample" };
+        static const char *hsname[NH] = { "HG eq. 3 (float)", "HG eq. 3 (double)",
+                                          "HG mist float", "HG mist double" };
+        static bench_fn hfn[NH] = { t_hg3f, t_hg3d, t_hgf, t_hgd };
         long bad[NI];
         int a, gi, c;
         for (i = 0; i < 1000; ++i) xs[i] = (i + 0.5) / 1000;
@@ -949,6 +962,56 @@ int main(int argc, char **argv)
                    hi[c]);
         }
 
+        /* the HG samplers the same way: g in SGH (1e-4: eq. 4's isotropic
+         * fallback; 0.01: eq. 3's cancellation as 1/g), the same xi */
+        for (c = 0; c < NH; ++c) {
+            hworst[c] = 0;
+            for (gi = 0; gi < 4; ++gi) hwg[c][gi] = 0;
+        }
+        for (gi = 0; gi < 4; ++gi) {
+            double g = SGH[gi];
+            float gf = (float)g;
+            for (i = 0; i < NX; ++i) {
+                float xf = (float)xs[i];
+                double u[NH], r[NH];
+                u[0] = hg_sample_printed(gf, xf);
+                u[1] = hg_sample_printed_d(g, xs[i]);
+                u[2] = mist_hg_samplef(gf, xf);
+                u[3] = mist_hg_sample(g, xs[i]);
+                r[0] = r[2] = (double)ref_sample_from(gf, 0, xf, u[2]);
+                r[1] = r[3] = (double)ref_sample_from(g, 0, xs[i], u[3]);
+                for (c = 0; c < NH; ++c) {
+                    double e = fabs(u[c] - r[c]);
+                    if (!(e == e)) e = 2;
+                    if (e > hwg[c][gi]) hwg[c][gi] = e;
+                    if (e > hworst[c]) {
+                        hworst[c] = e; hat[c][0] = g;
+                        hat[c][1] = c == 0 || c == 2 ? (double)xf : xs[i];
+                    }
+                }
+            }
+            for (c = 0; c < NH; ++c) add_job(hfn[c], g, 0, 0, D[0].fog, NULL, 0, &hcost[c][gi]);
+        }
+        run_jobs();
+        for (c = 0; c < NH; ++c) {
+            double t[4], tmp;
+            int j;
+            memcpy(t, hcost[c], sizeof t);
+            for (i = 0; i < 4; ++i)
+                for (j = i + 1; j < 4; ++j)
+                    if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
+            hmed[c] = 0.5 * (t[1] + t[2]); hlo[c] = t[0]; hhi[c] = t[3];
+        }
+        printf("\n### HG samplers against a __float128 inversion of the exact CDF\n\n"
+               "g in {1e-4, 0.01, 0.5, 0.9}, the same %d xi.\n\n", NX);
+        printf("| implementation | max abs(u - u*) | at (g, xi) | g=1e-4 | g=0.01 | g=0.5 "
+               "| g=0.9 | ns/sample median [min..max] |\n|---|---|---|---|---|---|---|---|\n");
+        for (c = 0; c < NH; ++c) {
+            printf("| %s | %.2g | (%g, %.9g) |", hname[c], hworst[c], hat[c][0], hat[c][1]);
+            for (gi = 0; gi < 4; ++gi) printf(" %.2g |", hwg[c][gi]);
+            printf(" %.2f [%.2f..%.2f] |\n", hmed[c], hlo[c], hhi[c]);
+        }
+
         /* ---- the SVG ----------------------------------------------------- */
         f = fopen(out, "w");
         if (!f) { fprintf(stderr, "cannot write %s\n", out); return 1; }
@@ -990,7 +1053,7 @@ int main(int argc, char **argv)
                       NULL, 0);
         }
         {
-            pt P[NI];
+            pt P[NI + NH];
             hline H[2];
             static const char *cl[NI] = { "#d00000", "#ff7f0e", "#17becf", "#1f77b4",
                                           "#2ca02c", "#9467bd" };
@@ -1004,11 +1067,19 @@ int main(int argc, char **argv)
                 P[c].color = cl[c]; P[c].shape = sh[c];
                 P[c].invalid = 0; P[c].series = 0; P[c].size = 7; P[c].hollow = 0;
             }
+            for (c = 0; c < NH; ++c) {          /* HG: hollow, colours as their Draine kin */
+                pt *q = &P[NI + c];
+                q->x = hmed[c]; q->xlo = hlo[c]; q->xhi = hhi[c];
+                q->y = hworst[c] > 0 ? hworst[c] : 1e-17; q->ylo = q->yhi = 0;
+                q->label = hsname[c]; q->color = cl[c]; q->shape = sh[c];
+                q->invalid = 0; q->series = 0; q->size = 7; q->hollow = 1;
+            }
             H[0].y = 0x1p-24; H[0].label = "float: 1 ulp just below 1";
             H[1].y = 0x1p-53; H[1].label = "double: 1 ulp just below 1";
-            svg_panel(f, 860, 95, 600, 400, "Draine samplers: error of u = cos \xce\xb8",
-                      "ns per sample (log scale; bar: min..max over the 12 (g, \xce\xb1))",
-                      "max |u \xe2\x88\x92 u*| over the grid", P, NI, NULL, H, 2);
+            svg_panel(f, 860, 95, 600, 400, "Samplers: error of u = cos \xce\xb8 (filled: Draine, "
+                      "hollow: HG)",
+                      "ns per sample (log scale; bar: min..max over the (g, \xce\xb1))",
+                      "max |u \xe2\x88\x92 u*| over the grid", P, NI + NH, NULL, H, 2);
         }
         /* legend and notes */
         {
@@ -1025,7 +1096,7 @@ int main(int argc, char **argv)
         {
             double lx = 860, ly = 580;
             int row = 0;
-            fprintf(f, "<rect x='%.0f' y='%.0f' width='600' height='340' fill='white' "
+            fprintf(f, "<rect x='%.0f' y='%.0f' width='600' height='360' fill='white' "
                     "stroke='#444'/>\n", lx, ly);
             fprintf(f, "<text x='%.0f' y='%.0f' font-size='15' font-weight='bold'>Legend"
                     "</text>\n", lx, ly - 12);
@@ -1049,8 +1120,9 @@ int main(int argc, char **argv)
                     "Reference: Lorenz-Mie (mist_mie.h), water, 450/550/650 nm,",
                     "lognormal sizes of width 1.1 (tests/mist_fitref.h). LUTs: Mie at",
                     "the nodes, linear interpolation, scaled to integrate to 1.",
-                    "Samplers: against a __float128 inversion of the exact CDF, g in",
-                    "{0.01, 0.1, 0.5, 0.9}, \xce\xb1 in {1, 17, 250}, 1006 \xce\xbe each; float",
+                    "Samplers: against a __float128 inversion of the exact CDF; Draine:",
+                    "g in {0.01, 0.1, 0.5, 0.9}, \xce\xb1 in {1, 17, 250}; HG: g in {1e-4,",
+                    "0.01, 0.5, 0.9}; 1006 \xce\xbe each; float",
                     "inputs rounded first. Costs: double unless marked, one call at a",
                     "time, median of 15 repetitions of 4096 random inputs.",
                 };

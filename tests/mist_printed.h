@@ -12,14 +12,14 @@ static inline float hg_eval_printed(float g, float u)
     return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f);
 }
 
-/* [JD23] eq. 3, with the eq. 4 isotropic fallback */
-static inline float hg_sample_printed(float g, float xi)
-{
-    float t;
-    if (fabsf(g) < 1e-3f) return 2 * xi - 1;
-    t = (1 - g * g) / (1 - g + 2 * g * xi);
+/* [JD23] eq. 3, with the eq. 4 isotropic fallback (float and double) */
+#define EQ3(T)                                                                 \
+    T t;                                                                       \
+    if (g < (T)1e-3 && g > -(T)1e-3) return 2 * xi - 1;                        \
+    t = (1 - g * g) / (1 - g + 2 * g * xi);                                    \
     return (1 + g * g - t * t) / (2 * g);
-}
+static inline float  hg_sample_printed(float g, float xi)    { EQ3(float) }
+static inline double hg_sample_printed_d(double g, double xi) { EQ3(double) }
 
 /* [JD23] eq. 6, typed in as printed */
 #define EQ6(T, SQRT, CBRT)                                                     \
