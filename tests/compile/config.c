@@ -1,6 +1,7 @@
 /* config.c - one configuration of mist.h (CONFIGURATION at the top of the
  * header: MIST_NO_DRAINE, _RAYLEIGH, _FOG, _HFOG, _DIR, _BATCH,
- * MIST_ONLY_HG), given by -D on the command line.  CMake compiles it for
+ * MIST_ONLY_HG; MIST_NO_LONG_DOUBLE and MIST_DRAINE_PREPARE_N, which keep
+ * every name), given by -D on the command line.  CMake compiles it for
  * every documented configuration with gcc and clang, -std=c99 -Wall
  * -Wextra -Wpedantic -Werror.
  *
