@@ -932,11 +932,11 @@ MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
  * Domain: g in [-1, 1], xi in [0, 1]. */
 MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 {
-    if (g > MIST__C(-1) && g < MIST__C(1) && xi > MIST__C(0) && xi <= MIST__C(1))
-        return MIST__FN(mist__hg_u)(g, xi);     /* inside: nothing to sanitise */
-    g  = MIST__FN(mist__g)(g);
-    xi = MIST__FN(mist__clamp01)(xi, MIST__C(0), MIST__C(1));
-    if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+    if (!(g > MIST__C(-1) && g < MIST__C(1) && xi > MIST__C(0) && xi <= MIST__C(1))) {
+        g  = MIST__FN(mist__g)(g);              /* outside: sanitise */
+        xi = MIST__FN(mist__clamp01)(xi, MIST__C(0), MIST__C(1));
+        if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+    }
     return MIST__FN(mist__hg_u)(g, xi);
 }
 
