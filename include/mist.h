@@ -638,8 +638,8 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /*   else (mirrored to g > 0) the form for 1 - u where it gives u > 3/8,    */
 /*     else a second division: the one for 1 + u where u < -1/2, the form   */
 /*     above where xi >= 1/4, the middle form below.                        */
-/* Measured against the float128 inversion: 0.37x the bar for |g| <= 1/4,  */
-/* 0.74x above (2.6e5 random g, xi each; tests/test_accuracy.c checks it    */
+/* Measured against the float128 inversion: 0.43x the bar for |g| <= 1/4,  */
+/* 0.74x above (1e5 random (g, xi) each; tests/test_accuracy.c checks it    */
 /* with MIST_NO_LONG_DOUBLE).  Cost (./build/mist_bench, three runs, busy   */
 /* machine): 1.5-2.5x eq. 3 in double at g = 0.1, 2.2-3.5x at 0.8, 3.3-6x   */
 /* at 0.3-0.5 (the branch to the second stage mispredicts), against 4.2-6.3x */
