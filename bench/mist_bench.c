@@ -14,7 +14,8 @@
  *     (bench/nold.c, MIST_NO_LONG_DOUBLE: MSVC, ARM Macs, CUDA).
  * Each figure: median of 15 timed repetitions (after a warm-up) over a
  * stream of 4096 random inputs, with the spread (min..max of the
- * repetitions).  Run: ./build/mist_bench  (see README.md). */
+ * repetitions); a ratio is the median over 15 turns of one repetition of
+ * the function and one of its baseline (measure_vs).  Run: ./build/mist_bench  (see README.md). */
 #define _POSIX_C_SOURCE 199309L
 #include "mist.h"
 #include "mist_mie.h"
@@ -44,20 +45,56 @@ static double now(void)
 
 typedef double (*bench_fn)(void);
 
+static void sort(double *t, int n)
+{
+    int i, j;
+    double tmp;
+    for (i = 0; i < n; ++i)
+        for (j = i + 1; j < n; ++j)
+            if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
+}
+
 static double measure(bench_fn f, double *lo, double *hi)
 {
-    double t[REPS], tmp;
-    int i, j;
+    double t[REPS];
+    int i;
     sink += f();                                   /* warm-up */
     for (i = 0; i < REPS; ++i) {
         double t0 = now();
         sink += f();
         t[i] = (now() - t0) / N * 1e9;
     }
-    for (i = 0; i < REPS; ++i)
-        for (j = i + 1; j < REPS; ++j)
-            if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
+    sort(t, REPS);
     *lo = t[0]; *hi = t[REPS - 1];
+    return t[REPS / 2];
+}
+
+/* f and its baseline timed in turns, one repetition of each a turn, so
+ * that a change of the machine's speed during the run (a busy neighbour,
+ * the clock: runs here on a shared machine came out 1.5x apart, and
+ * flipped between two speeds) hits both alike.  Returns f's median (lo,
+ * hi its spread); *ratio is the median over the turns of f's time over
+ * the baseline's, *bm the baseline's median. */
+static double measure_vs(bench_fn f, bench_fn base, double *lo, double *hi, double *ratio,
+                         double *bm)
+{
+    double t[REPS], tb[REPS], r[REPS];
+    int i;
+    sink += f();
+    sink += base();                                /* warm-up */
+    for (i = 0; i < REPS; ++i) {
+        double t0 = now(), t1;
+        sink += base();
+        t1 = now();
+        sink += f();
+        tb[i] = (t1 - t0) / N * 1e9;
+        t[i] = (now() - t1) / N * 1e9;
+        r[i] = t[i] / tb[i];
+    }
+    sort(t, REPS); sort(tb, REPS); sort(r, REPS);
+    *lo = t[0]; *hi = t[REPS - 1];
+    *ratio = r[REPS / 2];
+    *bm = tb[REPS / 2];
     return t[REPS / 2];
 }
 
@@ -189,27 +226,27 @@ static double b_fit_mistf(void)
     return s;
 }
 
-static void row(const char *name, bench_fn f, const char *base_name, double base);
+static void row(const char *name, bench_fn f, const char *base_name, bench_fn base);
 
 static void alternatives(void)
 {
-    double lo, hi, base;
+    bench_fn base;
     mist_fog fog = mist_fog_from_diameter(10);
     alt_k = alt_schlick_kf(0.8f);
     alt_fog_lut = alt_lut_buildf(256, alt_fog_dens, &fog);
     printf("\nThe cheap alternatives a renderer might use instead (tests/mist_alt.h):\n");
-    base = measure(b_hg_evalf, &lo, &hi);
-    row("mist_hg_evalf (g .8)", b_hg_evalf, NULL, 0);
+    base = b_hg_evalf;
+    row("mist_hg_evalf (g .8)", b_hg_evalf, NULL, NULL);
     row("Schlick eval (k from g .8, float)", b_schlick_evalf, "mist_hg_evalf", base);
     row("LUT eval, 256 entries (fog 10 um)", b_lut_evalf, "mist_hg_evalf", base);
     row("mist_fog_evalf (d = 10 um)", b_fog_evalf, "mist_hg_evalf", base);
-    base = measure(b_hg_samplef, &lo, &hi);
-    row("mist_hg_samplef (g .8)", b_hg_samplef, NULL, 0);
+    base = b_hg_samplef;
+    row("mist_hg_samplef (g .8)", b_hg_samplef, NULL, NULL);
     row("Schlick sample (float)", b_schlick_samplef, "mist_hg_samplef", base);
     row("LUT inverse CDF, 256 entries (fog)", b_lut_samplef, "mist_hg_samplef", base);
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, "mist_hg_samplef", base);
-    base = measure(b_fit_printedf, &lo, &hi);
-    row("fits eq. 7-10 as printed (float)", b_fit_printedf, NULL, 0);
+    base = b_fit_printedf;
+    row("fits eq. 7-10 as printed (float)", b_fit_printedf, NULL, NULL);
     row("mist_fog_from_diameterf (5-50 um)", b_fit_mistf, "printed", base);
     free(alt_fog_lut.p);
     free(alt_fog_lut.icdf);
@@ -240,13 +277,18 @@ static double mie_ms(double d_um)
     return t[2];
 }
 
-static void row(const char *name, bench_fn f, const char *base_name, double base)
+/* a row: f's ns per call, and with a baseline the ratio to it, timed in
+ * turns with it (measure_vs) */
+static void row(const char *name, bench_fn f, const char *base_name, bench_fn base)
 {
-    double lo, hi, m = measure(f, &lo, &hi);
-    if (base_name)
-        printf("%-34s %8.2f  [%6.2f..%6.2f]  %6.2fx %s\n", name, m, lo, hi, m / base, base_name);
-    else
+    double lo, hi, r, bm, m;
+    if (base_name) {
+        m = measure_vs(f, base, &lo, &hi, &r, &bm);
+        printf("%-34s %8.2f  [%6.2f..%6.2f]  %6.2fx %s\n", name, m, lo, hi, r, base_name);
+    } else {
+        m = measure(f, &lo, &hi);
         printf("%-34s %8.2f  [%6.2f..%6.2f]\n", name, m, lo, hi);
+    }
 }
 
 static void machine(void)
@@ -292,36 +334,36 @@ static void machine(void)
  * the ratio is the saving of preparing once per medium. */
 static void prepared_rows(void)
 {
-    double lo, hi, base;
+    bench_fn base;
     ph_hgf = mist_phase_hgf(0.8f);
     ph_drf = mist_phase_drainef(0.5f, 17.f);
     ph_dr  = mist_phase_draine(0.5, 17.);
     ph_fogf = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
     printf("\nprepared (mist_phase_*) vs unprepared:\n");
-    base = measure(b_hg_evalf_unprep, &lo, &hi);
+    base = b_hg_evalf_unprep;
     row("mist_phase_evalf (HG .8)", b_phase_hg_evalf, "mist_hg_evalf", base);
-    base = measure(b_hg_samplef_unprep, &lo, &hi);
+    base = b_hg_samplef_unprep;
     row("mist_phase_samplef (HG .8)", b_phase_hg_samplef, "mist_hg_samplef", base);
-    base = measure(b_draine_evalf_rt, &lo, &hi);
+    base = b_draine_evalf_rt;
     row("mist_phase_evalf (Draine .5, 17)", b_phase_draine_evalf, "mist_draine_evalf", base);
-    base = measure(b_draine_samplef_rt, &lo, &hi);
+    base = b_draine_samplef_rt;
     row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "mist_draine_samplef",
         base);
-    base = measure(b_draine_sample_rt, &lo, &hi);
+    base = b_draine_sample_rt;
     row("mist_phase_sample (Draine .5, 17)", b_phase_draine_sample, "mist_draine_sample", base);
-    base = measure(b_eq6f, &lo, &hi);
+    base = b_eq6f;
     row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "eq. 6 float", base);
     ph_dr250f = mist_phase_drainef(0.1f, 250.f);
     ph_csf = mist_phase_csf(0.7f);
-    base = measure(b_eq6f_250, &lo, &hi);
-    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, 0);
+    base = b_eq6f_250;
+    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, NULL);
     row("mist_phase_samplef (Draine .1, 250)", b_phase_dr250_samplef, "eq. 6 float", base);
-    base = measure(b_eq6f_cs, &lo, &hi);
-    row("eq. 6 float (g .7, a 1)", b_eq6f_cs, NULL, 0);
+    base = b_eq6f_cs;
+    row("eq. 6 float (g .7, a 1)", b_eq6f_cs, NULL, NULL);
     row("mist_phase_samplef (CS .7)", b_phase_cs_samplef, "eq. 6 float", base);
-    base = measure(b_fog_evalf_rt, &lo, &hi);
+    base = b_fog_evalf_rt;
     row("mist_phase_evalf (fog, 10 um)", b_phase_fog_evalf, "mist_fog_evalf", base);
-    base = measure(b_fog_samplef_rt, &lo, &hi);
+    base = b_fog_samplef_rt;
     row("mist_phase_samplef (fog, 10 um)", b_phase_fog_samplef, "mist_fog_samplef", base);
 }
 
@@ -385,48 +427,48 @@ static double n_rayleigh_sample(void)  NCALL(double, mist_rayleigh_sample_n(xd, 
 /* a row whose ratio is a speed-up: the baseline's time over this one's */
 static void row_speedup(const char *name, bench_fn f, bench_fn scalar)
 {
-    double lo, hi, s = measure(scalar, &lo, &hi), m = measure(f, &lo, &hi);
+    double lo, hi, r, s, m = measure_vs(f, scalar, &lo, &hi, &r, &s);
     printf("%-34s %8.2f  [%6.2f..%6.2f]  %5.2fx the scalar loop (%.2f ns)\n",
-           name, m, lo, hi, s / m, s);
+           name, m, lo, hi, 1 / r, s);
 }
 
 static void hg_target_rows(void)
 {
-    double lo, hi, b;
+    bench_fn b;
     printf("\nHG against the bare formula (eq. 2 with sqrt, eq. 3), same type, "
            "same loop;\nscalar loops %s, vector loops vectorised by the compiler:\n",
            NOVEC_OK ? "kept scalar (NOVEC)" : "MAY BE VECTORISED (no NOVEC here)");
-    b = measure(b_bare_evalf, &lo, &hi);
-    row("bare HG eval (float, scalar)", b_bare_evalf, NULL, 0);
+    b = b_bare_evalf;
+    row("bare HG eval (float, scalar)", b_bare_evalf, NULL, NULL);
     row("mist_hg_evalf", b_hg_evalf, "bare", b);
-    b = measure(b_bare_eval, &lo, &hi);
-    row("bare HG eval (double, scalar)", b_bare_eval, NULL, 0);
+    b = b_bare_eval;
+    row("bare HG eval (double, scalar)", b_bare_eval, NULL, NULL);
     row("mist_hg_eval", b_hg_eval, "bare", b);
-    b = measure(b_hg_sample_printed, &lo, &hi);
-    row("eq. 3 HG sample (float, scalar)", b_hg_sample_printed, NULL, 0);
+    b = b_hg_sample_printed;
+    row("eq. 3 HG sample (float, scalar)", b_hg_sample_printed, NULL, NULL);
     row("mist_hg_samplef", b_hg_samplef, "eq. 3", b);
-    b = measure(b_bare_sample, &lo, &hi);
-    row("eq. 3 HG sample (double, scalar)", b_bare_sample, NULL, 0);
+    b = b_bare_sample;
+    row("eq. 3 HG sample (double, scalar)", b_bare_sample, NULL, NULL);
     row("mist_hg_sample", b_hg_sample, "eq. 3", b);
     row("mist_hg_sample (no long double)", b_hg_sample_nold, "eq. 3", b);
     row("  the same at g .5", b_hg_sample_nold5, "eq. 3", b);
     row("  the same at g .3", b_hg_sample_nold3, "eq. 3", b);
     row("  the same at g .1", b_hg_sample_nold1, "eq. 3", b);
-    b = measure(v_bare_evalf, &lo, &hi);
-    row("bare HG eval (float, vector)", v_bare_evalf, NULL, 0);
+    b = v_bare_evalf;
+    row("bare HG eval (float, vector)", v_bare_evalf, NULL, NULL);
     row("mist_hg_eval_nf", n_hg_evalf, "bare", b);
-    b = measure(v_bare_eval, &lo, &hi);
-    row("bare HG eval (double, vector)", v_bare_eval, NULL, 0);
+    b = v_bare_eval;
+    row("bare HG eval (double, vector)", v_bare_eval, NULL, NULL);
     row("mist_hg_eval_n", n_hg_eval, "bare", b);
-    b = measure(v_bare_samplef, &lo, &hi);
-    row("eq. 3 HG sample (float, vector)", v_bare_samplef, NULL, 0);
+    b = v_bare_samplef;
+    row("eq. 3 HG sample (float, vector)", v_bare_samplef, NULL, NULL);
     row("mist_hg_sample_nf", n_hg_samplef, "eq. 3", b);
-    b = measure(v_bare_sample, &lo, &hi);
-    row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, 0);
+    b = v_bare_sample;
+    row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, NULL);
     row("mist_hg_sample_n", n_hg_sample, "eq. 3", b);
     row("mist_hg_sample_n (no long double)", n_hg_sample_nold, "eq. 3", b);
-    b = measure(v_eq6f, &lo, &hi);
-    row("eq. 6 Draine sample (float, array)", v_eq6f, NULL, 0);
+    b = v_eq6f;
+    row("eq. 6 Draine sample (float, array)", v_eq6f, NULL, NULL);
     row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "eq. 6", b);
 }
 
@@ -521,7 +563,7 @@ static void size_rows(void)
 
 int main(void)
 {
-    double lo, hi, base;
+    bench_fn base;
     int i;
     unsigned long long s = 88172645463325252ULL;
     for (i = 0; i < N; ++i) {
@@ -535,39 +577,39 @@ int main(void)
     printf("ns per call: median of %d repetitions of %d calls [min..max]; "
            "ratio to the baseline named\n\n", REPS, N);
 
-    base = measure(b_hg_eval_printed, &lo, &hi);
-    row("eq. 2 HG eval as printed (float)", b_hg_eval_printed, NULL, 0);
+    base = b_hg_eval_printed;
+    row("eq. 2 HG eval as printed (float)", b_hg_eval_printed, NULL, NULL);
     row("mist_hg_evalf", b_hg_evalf, "eq. 2", base);
     row("mist_hg_eval", b_hg_eval, "eq. 2", base);
-    base = measure(b_hg_sample_printed, &lo, &hi);
-    row("eq. 3 HG sample as printed (float)", b_hg_sample_printed, NULL, 0);
+    base = b_hg_sample_printed;
+    row("eq. 3 HG sample as printed (float)", b_hg_sample_printed, NULL, NULL);
     row("mist_hg_samplef", b_hg_samplef, "eq. 3", base);
     row("mist_hg_sample", b_hg_sample, "eq. 3", base);
-    base = measure(b_hg_sample_floatonly, &lo, &hi);
-    row("HG sample, float arithmetic only", b_hg_sample_floatonly, NULL, 0);
+    base = b_hg_sample_floatonly;
+    row("HG sample, float arithmetic only", b_hg_sample_floatonly, NULL, NULL);
     row("mist_hg_samplef (double inside)", b_hg_samplef, "float only", base);
     row("mist_hg_sample_dirf", b_hg_sample_dirf, "eq. 3", base);
     printf("\n");
-    row("mist_draine_evalf (g .5, a 17)", b_draine_evalf, "eq. 2", measure(b_hg_eval_printed, &lo, &hi));
-    row("mist_draine_eval  (g .5, a 17)", b_draine_eval, NULL, 0);
-    base = measure(b_eq6f, &lo, &hi);
-    row("eq. 6 Draine as printed (float)", b_eq6f, NULL, 0);
+    row("mist_draine_evalf (g .5, a 17)", b_draine_evalf, "eq. 2", b_hg_eval_printed);
+    row("mist_draine_eval  (g .5, a 17)", b_draine_eval, NULL, NULL);
+    base = b_eq6f;
+    row("eq. 6 Draine as printed (float)", b_eq6f, NULL, NULL);
     row("eq. 6 Draine as printed (double)", b_eq6, "eq. 6 float", base);
     row("mist_draine_samplef (g .5, a 17)", b_draine_samplef, "eq. 6 float", base);
     row("mist_draine_sample  (g .5, a 17)", b_draine_sample, "eq. 6 float", base);
     row("  the same, no long double", b_draine_sample_nold, "eq. 6 float", base);
-    base = measure(b_eq6f_250, &lo, &hi);
-    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, 0);
+    base = b_eq6f_250;
+    row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, NULL);
     row("mist_draine_samplef (g .1, a 250)", b_draine_samplef_250, "eq. 6 float", base);
     row("mist_cs_samplef (g .7)", b_cs_samplef, "eq. 6 float", base);
     printf("\n");
-    base = measure(b_rayleigh_floatonly, &lo, &hi);
-    row("Rayleigh sample, float arithmetic only", b_rayleigh_floatonly, NULL, 0);
+    base = b_rayleigh_floatonly;
+    row("Rayleigh sample, float arithmetic only", b_rayleigh_floatonly, NULL, NULL);
     row("mist_rayleigh_samplef (double inside)", b_rayleigh_samplef, "float only", base);
-    row("mist_rayleigh_sample", b_rayleigh_sample, NULL, 0);
-    row("mist_rayleigh_sample (no long double)", b_rayleigh_sample_nold, NULL, 0);
-    row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, 0);
-    row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, 0);
+    row("mist_rayleigh_sample", b_rayleigh_sample, NULL, NULL);
+    row("mist_rayleigh_sample (no long double)", b_rayleigh_sample_nold, NULL, NULL);
+    row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, NULL);
+    row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, NULL);
     prepared_rows();
     alternatives();
     hg_target_rows();
