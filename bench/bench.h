@@ -21,8 +21,8 @@
 #  define NOVEC_OK 0
 #endif
 
-/* bench/nold.c: the double samplers built with MIST_NO_LONG_DOUBLE (what
- * MSVC, ARM Macs and CUDA device code get), each a loop of n calls over
+/* bench/nold.c: the double samplers built with MIST_NO_LONG_DOUBLE and
+ * without fma (what MSVC x64 gets), each a loop of n calls over
  * x[] into out[] (scalar loops kept scalar by NOVEC; the batch form one
  * call), returning out[n / 2] */
 double nold_hg_sample(double g, const double *x, double *out, int n);

@@ -478,7 +478,11 @@ static void batch_rows(void)
     row_speedup("mist_hg_eval_nf", n_hg_evalf, b_hg_evalf);
     row_speedup("mist_hg_eval_n", n_hg_eval, b_hg_eval);
     row_speedup("mist_hg_sample_nf", n_hg_samplef, b_hg_samplef);
+#if defined(FP_FAST_FMA)
+    row_speedup("mist_hg_sample_n (double-double)", n_hg_sample, b_hg_sample);
+#else
     row_speedup("mist_hg_sample_n (long double)", n_hg_sample, b_hg_sample);
+#endif
     row_speedup("mist_hg_sample_n (no long double)", n_hg_sample_nold, b_hg_sample_nold);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);

@@ -1,7 +1,9 @@
 /* nold.c - the double samplers as built without a wider long double
- * (MIST_NO_LONG_DOUBLE: what MSVC, ARM Macs and CUDA device code get; see
- * "Henyey-Greenstein: exact sampling" in mist.h), timed by
- * bench/mist_bench.c in loops of the same shape as its own (bench/bench.h). */
+ * (MIST_NO_LONG_DOUBLE) and, on x86 with gcc or clang, without fma
+ * (-mno-fma, CMakeLists.txt): what MSVC x64 gets (see "Henyey-Greenstein:
+ * exact sampling" in mist.h; with fma the HG sampler is double-double
+ * either way), timed by bench/mist_bench.c in loops of the same shape as
+ * its own (bench/bench.h). */
 #define MIST_NO_LONG_DOUBLE
 #include "mist.h"
 #include "bench.h"

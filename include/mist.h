@@ -43,10 +43,14 @@
  *   bar by up to 1.7x (measured; each sampler section says so).  Where long
  *   double is no wider than double (MSVC, ARM Macs, CUDA device code; or
  *   MIST_NO_LONG_DOUBLE) the double samplers run in double: HG and Rayleigh
- *   within the bar, Draine and Cornette-Shanks within 2x of it (5x for
+ *   within the bar, Draine and Cornette-Shanks within 2x of it (6x for
  *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
  *   or two below the one before; tests/test_accuracy.c counts them, built as
- *   test_accuracy_nold).  Float is the same everywhere.
+ *   test_accuracy_nold).  Except double HG sampling where fma is one
+ *   instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or later, CUDA
+ *   device code): there it runs in double-double, correctly rounded in
+ *   practice and monotone, with or without long double, and its batch form
+ *   vectorises.  Float is the same everywhere.
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
@@ -73,9 +77,8 @@
  *                 instead of guarding against them (see FAST MATH).
  *   MIST_NO_LONG_DOUBLE  run the double samplers in double even where long
  *                 double is wider: what MSVC, ARM Macs and CUDA device code
- *                 get (see above): HG sampling 1.5-6x the printed eq. 3
- *                 instead of 4-6x, Rayleigh ~2x faster (README "Speed"),
- *                 for those bars and no monotonicity.
+ *                 get (see above): Rayleigh ~2x faster, Draine ~1.7x, for
+ *                 those bars and no monotonicity (README "Speed").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -117,10 +120,10 @@
  *   evals of HG and Draine) vectorise only where sqrt need not set errno
  *   (-fno-math-errno, implied by -ffast-math; the default on macOS).  The
  *   float HG and Rayleigh samplers (one straight-line form in double) are
- *   vectorised.  The double HG and Rayleigh samplers (long double inside,
- *   where it is wider than double) are plain loops, as fast as the scalar
- *   calls, not faster; without it (MIST_NO_LONG_DOUBLE) the double HG
- *   sampler is vectorised with AVX (both of its stages for every element).  The unprepared Draine sampler is a loop below
+ *   vectorised, and so is the double HG sampler where it runs in
+ *   double-double (FP_FAST_FMA) or, with AVX, in double alone.  The double
+ *   Rayleigh sampler and the double HG sampler in long double are plain
+ *   loops, as fast as the scalar calls, not faster.  The unprepared Draine sampler is a loop below
  *   MIST_DRAINE_PREPARE_N (1024) elements; from there on it prepares the
  *   medium once and returns the prepared sampler's values (the one
  *   exception to "bit for bit": the same bar, monotone in xi, but the
@@ -544,6 +547,12 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
  * MIST__M(f) the libm function for it (sqrt / sqrtf), MIST__C(x) a constant
  * of that type. */
 #define MIST__C(x) ((MIST__T)(x))
+/* the double HG sampler in double-double (see "Henyey-Greenstein: exact
+ * sampling"): double where fma is one instruction */
+#if (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)) && !defined(MIST__W_EXACT) \
+    && !defined(MIST__INTERNAL_ONLY)
+#  define MIST__HG_DD 1
+#endif
 
 /* ======================================================================== */
 /* Input sanitising (the documented domain, see the top of the file)        */
@@ -646,8 +655,19 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* for the long double forms in the same runs.                              */
 /* But with errors of an ulp or two these are not monotone in adjacent xi: */
 /* 0.01-2.5% of adjacent double pairs come out reversed (g .1 to .8;        */
-/* measured over 1e7 each).  Monotone and within the bar would need ~11     */
-/* more bits (long double, or double-double at ~5x the operations).        */
+/* measured over 1e7 each).  Monotone and within the bar needs ~11 more     */
+/* bits: long double, or                                                    */
+/*                                                                          */
+/* DOUBLE-DOUBLE where fma is one instruction (x86 with -march=haswell or   */
+/* later, ARM64, CUDA device code: FP_FAST_FMA): the one form 1 - nb/D^2    */
+/* with every term as an unevaluated sum hi + lo (products by fma, sums by  */
+/* Knuth's two-sum; 1 - xi exact as such a pair), one division and its     */
+/* remainder by fma (mist__hg_dd).  About 2^-100 of error: correctly        */
+/* rounded in practice (1e5 random (g, xi) against float128: every sample   */
+/* the rounded root), monotone (0 reversed pairs of 1.4e7), branch-free     */
+/* (the batch form vectorises), 2.9x eq. 3 against ~4x for long double.     */
+/* This is the double sampler wherever it applies; elsewhere long double,  */
+/* or without either (MSVC x64) the double forms above.                     */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -715,6 +735,31 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y
     MIST__T omg = MIST__C(1) - g, d = omg + MIST__C(2) * g * x;
     return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
 }
+
+#if defined(MIST__HG_DD)
+/* DOUBLE-DOUBLE (see the section comment): u for g in [0, 1) at x = xh + xl,
+ * y = yh + yl = 1 - x exactly (one of the pairs has lo = 0) */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dd)(MIST__T g, MIST__T xh, MIST__T xl, MIST__T yh,
+                                                MIST__T yl)
+{
+    MIST__T oh = MIST__C(1) - g, ol = (MIST__C(1) - oh) - g;             /* 1 - g */
+    MIST__T gh = g * xh, gl = MIST__M(fma)(g, xh, -gh) + g * xl;          /* g x */
+    MIST__T eh = MIST__C(1) + gh, el = (gh - (eh - MIST__C(1))) + gl;     /* 1 + g x */
+    MIST__T dh = oh + MIST__C(2) * gh, dt = dh - oh;                      /* D */
+    MIST__T dl = ((oh - (dh - dt)) + (MIST__C(2) * gh - dt)) + ol + MIST__C(2) * gl;
+    MIST__T qh = dh * dh, ql = MIST__M(fma)(dh, dh, -qh) + MIST__C(2) * dh * dl;   /* D^2 */
+    MIST__T ph = oh * oh, pl = MIST__M(fma)(oh, oh, -ph) + MIST__C(2) * oh * ol;   /* (1-g)^2 */
+    MIST__T ah = yh * ph, al = MIST__M(fma)(yh, ph, -ah) + yh * pl + yl * ph;
+    MIST__T nh = MIST__C(2) * ah * eh;                                    /* nb = 2 y (1-g)^2 (1 + g x) */
+    MIST__T nl = MIST__C(2) * (MIST__M(fma)(ah, eh, -ah * eh) + ah * el + al * eh);
+    MIST__T iv = MIST__C(1) / qh, q1 = nh * iv;                           /* nb / D^2 */
+    MIST__T q2 = (MIST__M(fma)(-q1, qh, nh) + nl - q1 * ql) * iv;
+    MIST__T sh = MIST__C(1) - q1, sb = sh - MIST__C(1);                   /* 1 - q1 exactly */
+    MIST__T sl = (MIST__C(1) - (sh - sb)) + (-q1 - sb);
+    return sh + (sl - q2);
+}
+
+#endif
 
 #if !defined(MIST__W)
 /* WITHOUT A WIDER TYPE (see the section comment): |g| <= 1/4, xi in [0, 1] */
@@ -895,6 +940,18 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 }
 #endif
 
+#if defined(MIST__HG_DD)
+/* the double sampler in double-double: sanitised |g| < 1, xi in [0, 1];
+ * g < 0 by the mirror u(g, xi) = -u(-g, 1 - xi), 1 - xi as an exact pair */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_ddu)(MIST__T g, MIST__T xi)
+{
+    MIST__T c = MIST__C(1) - xi, cl = (MIST__C(1) - c) - xi, u;
+    u = g >= MIST__C(0) ?  MIST__FN(mist__hg_dd)( g, xi, MIST__C(0), c, cl)
+                        : -MIST__FN(mist__hg_dd)(-g, c, cl, xi, MIST__C(0));
+    return MIST__FN(mist__clamp11)(u);
+}
+#endif
+
 #if !defined(MIST__W)
 /* the double sampler without a wider type: sanitised |g| < 1, xi in [0, 1] */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
@@ -912,7 +969,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
 #endif
 
 /* The HG sample at sanitised |g| < 1, xi in [0, 1]: float in double by the
- * one form (mist__hg_one), double by the three forms in long double (0.5
+ * one form (mist__hg_one); double in double-double where fma is one
+ * instruction (mist__hg_ddu), else by the three forms in long double (0.5
  * ulp instead of up to 4.4 in double, measured), or without a wider type
  * by mist__hg_dbl. */
 MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
@@ -921,6 +979,8 @@ MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
     MIST__W x = (MIST__W)xi, y = (MIST__W)1 - x;
     return g >= MIST__C(0) ?  (MIST__T)MIST__WFN(mist__hg_one)((MIST__W)g, x, y)
                            : -(MIST__T)MIST__WFN(mist__hg_one)(-(MIST__W)g, y, x);
+#elif defined(MIST__HG_DD)
+    return MIST__FN(mist__hg_ddu)(g, xi);
 #elif defined(MIST__W)
     return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
 #else
@@ -930,7 +990,7 @@ MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 
 /* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
  * Domain: g in [-1, 1], xi in [0, 1]. */
-MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
+MIST__F MIST__HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 {
     if (!(g > MIST__C(-1) && g < MIST__C(1) && xi > MIST__C(0) && xi <= MIST__C(1))) {
         g  = MIST__FN(mist__g)(g);              /* outside: sanitise */
@@ -983,9 +1043,10 @@ MIST__F MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* iterate alone stopped far from the root (issue 2).  Where long double is */
 /* no wider than double (MSVC, ARM Macs, CUDA device code) the double       */
 /* samplers skip the wide steps: within 2x the bar (1.75x measured) for     */
-/* alpha <= 1e4, up to 5x (4.8x measured) for alpha > 1e4, |g| <= 1e-3 and  */
-/* xi within a few ulps of F(0), where F is flat to third order; and not    */
-/* monotone in adjacent xi (tests/test_accuracy.c as test_accuracy_nold).   */
+/* alpha <= 1e4, up to 6x for alpha > 1e4, |g| <= 1e-3 and xi within a few  */
+/* ulps of F(0), where F is flat to third order (4.8x measured without fma, */
+/* 5.7x with fma and no other contraction, x86 -march=native -std=c99); and */
+/* not monotone in adjacent xi (tests/test_accuracy.c, test_accuracy_nold). */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
@@ -1858,6 +1919,17 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
             MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
                          y_[j_] = -(MIST__T)MIST__WFN(mist__hg_one)(gw, 1 - x, x))
         }
+    }
+#elif defined(MIST__HG_DD)
+    {   /* double-double (mist__hg_ddu), branch-free: the mirror by selects,
+         * 0 and 1 read at run time (see below) */
+        volatile MIST__T z0 = 0;
+        MIST__T z = z0, one = z + 1, ga = g < z ? -g : g, neg = g < z ? one : z;
+        MIST__BLOCKS(MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+                     MIST__T c = one - xi; MIST__T cl = (one - c) - xi;
+                     MIST__T u = MIST__FN(mist__hg_dd)(ga, neg > z ? c : xi, neg > z ? cl : z,
+                                                      neg > z ? xi : c, neg > z ? z : cl);
+                     y_[j_] = MIST__FN(mist__clamp11)(u) * (one - MIST__C(2) * neg))
     }
 #elif defined(MIST__W) || !defined(__AVX__)
     /* long double has no vectors; and with 2 doubles a vector (SSE2, NEON)
@@ -3290,6 +3362,7 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 #endif /* !MIST__INTERNAL_ONLY */
 
 #undef MIST__C
+#undef MIST__HG_DD
 
 #endif /* MIST__TEMPLATE */
 

@@ -924,6 +924,25 @@ MI_INLINE MI_V3 MI_F(mi_normalize)(MI_V3 v)
     return o;
 }
 
+/* Where the target has FMA (__FP_FAST_FMA) a compiler allowed to contract
+ * (-ffp-contract=fast, the O3 variant) may fuse a*b+c differently in two
+ * inlined copies of one function (measured: 1 ulp between
+ * mist_draine_sample_dirf and mist_dir_from_cosf at the same u, gcc 12
+ * -O3 -march=native, once the batch kernels were forced inline; and
+ * between two calls of mist_dir_from_cos at the same sanitised input once
+ * the double HG sampler went double-double): there a direction equals
+ * another to 4 eps per component (unit vectors). */
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
+#  define MI_CONTRACT 1
+#else
+#  define MI_CONTRACT 0
+#endif
+MI_INLINE int MI_F(mi_same_dir)(MI_V3 a, MI_V3 b)
+{
+    return MI_F(mi_same_v)(a, b)
+        || (MI_CONTRACT && fabsl((mi_w)a.x - b.x) <= 4 * MI_EPS
+            && fabsl((mi_w)a.y - b.y) <= 4 * MI_EPS && fabsl((mi_w)a.z - b.z) <= 4 * MI_EPS);
+}
 MI_INLINE MI_V3 MI_F(mi_dir_from_cos)(MI_V3 wi, MI_T u, MI_T xi)
 {
     MI_V3 o = MI_CALL(MI_L(mist_dir_from_cos)(wi, u, xi)), o2;
@@ -931,7 +950,7 @@ MI_INLINE MI_V3 MI_F(mi_dir_from_cos)(MI_V3 wi, MI_T u, MI_T xi)
     if (MI_F(mi_check_dir)("mist_dir_from_cos", wi, u, o)) return o;
     if (!MI_ISNAN(u) && (MI_F(mi_changed)(us, u) || MI_F(mi_changed)(xs, xi))) {
         o2 = MI_CALL(MI_L(mist_dir_from_cos)(wi, us, xs));
-        if (!MI_F(mi_same_v)(o, o2))
+        if (!MI_F(mi_same_dir)(o, o2))
             mi_fail("mist_dir_from_cos(wi=(%a, %a, %a), u=%a, xi=%a): differs at the sanitised input",
                     (double)wi.x, (double)wi.y, (double)wi.z, (double)u, (double)xi);
     }
@@ -949,23 +968,6 @@ MI_INLINE MI_V3 MI_F(mi_dir_from_cos)(MI_V3 wi, MI_T u, MI_T xi)
 /* The common part of the *_sample_dir checks: the reported pdf is the
  * density at the sampled cosine u, the direction is dir_from_cos(wi, u,
  * xi2), and with pdf NULL the direction is the same. */
-/* Where the target has FMA (__FP_FAST_FMA) a compiler allowed to contract
- * (-ffp-contract=fast, the O3 variant) may fuse a*b+c differently in two
- * inlined copies of one function (measured: 1 ulp between
- * mist_draine_sample_dirf and mist_dir_from_cosf at the same u, gcc 12
- * -O3 -march=native, once the batch kernels were forced inline): there a
- * direction equals another to 4 eps per component (unit vectors). */
-#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
-#  define MI_CONTRACT 1
-#else
-#  define MI_CONTRACT 0
-#endif
-MI_INLINE int MI_F(mi_same_dir)(MI_V3 a, MI_V3 b)
-{
-    return MI_F(mi_same_v)(a, b)
-        || (MI_CONTRACT && fabsl((mi_w)a.x - b.x) <= 4 * MI_EPS
-            && fabsl((mi_w)a.y - b.y) <= 4 * MI_EPS && fabsl((mi_w)a.z - b.z) <= 4 * MI_EPS);
-}
 MI_INLINE void MI_F(mi_check_sdir)(const char *fn, MI_V3 wi, MI_T xi2, MI_T u, MI_T dens,
                                    MI_V3 o, MI_T pdf, MI_V3 onull)
 {
