@@ -429,6 +429,18 @@ static void run_jobs(void)
     njobs = 0;
 }
 
+/* the median (of the middle two for even n), min and max of v[0..n), n <= 16 */
+static void med_range(const double *v, int n, double *med, double *lo, double *hi)
+{
+    double t[16], tmp;
+    int i, j;
+    memcpy(t, v, (size_t)n * sizeof *t);
+    for (i = 0; i < n; ++i)
+        for (j = i + 1; j < n; ++j)
+            if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
+    *med = 0.5 * (t[(n - 1) / 2] + t[n / 2]); *lo = t[0]; *hi = t[n - 1];
+}
+
 /* the timing jobs of model m at diameter q: ns per eval into *ne, per
  * sample into *ns (-1: no sampler) */
 static void model_jobs(int m, const diam *q, double *ne, double *ns)
@@ -940,15 +952,7 @@ int main(int argc, char **argv)
                 add_job(t_prepd, g, al, 0, D[0].fog, NULL, 0, &cost[5][gi * 3 + a]);
             }
         run_jobs();
-        for (c = 0; c < NI; ++c) {
-            double t[12], tmp;
-            int j;
-            memcpy(t, cost[c], sizeof t);
-            for (i = 0; i < 12; ++i)
-                for (j = i + 1; j < 12; ++j)
-                    if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
-            med[c] = 0.5 * (t[5] + t[6]); lo[c] = t[0]; hi[c] = t[11];
-        }
+        for (c = 0; c < NI; ++c) med_range(cost[c], 12, &med[c], &lo[c], &hi[c]);
         printf("\n### Draine samplers against a __float128 inversion of the exact CDF\n\n"
                "g in {0.01, 0.1, 0.5, 0.9}, alpha in {1, 17, 250}, %d xi each.\n\n", NX);
         printf("| implementation | max abs(u - u*) | at (g, alpha, xi) | g=0.01 | g=0.1 "
@@ -993,15 +997,7 @@ int main(int argc, char **argv)
             for (c = 0; c < NH; ++c) add_job(hfn[c], g, 0, 0, D[0].fog, NULL, 0, &hcost[c][gi]);
         }
         run_jobs();
-        for (c = 0; c < NH; ++c) {
-            double t[4], tmp;
-            int j;
-            memcpy(t, hcost[c], sizeof t);
-            for (i = 0; i < 4; ++i)
-                for (j = i + 1; j < 4; ++j)
-                    if (t[j] < t[i]) { tmp = t[i]; t[i] = t[j]; t[j] = tmp; }
-            hmed[c] = 0.5 * (t[1] + t[2]); hlo[c] = t[0]; hhi[c] = t[3];
-        }
+        for (c = 0; c < NH; ++c) med_range(hcost[c], 4, &hmed[c], &hlo[c], &hhi[c]);
         printf("\n### HG samplers against a __float128 inversion of the exact CDF\n\n"
                "g in {1e-4, 0.01, 0.5, 0.9}, the same %d xi.\n\n", NX);
         printf("| implementation | max abs(u - u*) | at (g, xi) | g=1e-4 | g=0.01 | g=0.5 "
