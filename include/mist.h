@@ -158,10 +158,11 @@
  *          not inline a function with other floating-point flags into a
  *          fast-math caller, so every mist call stays a call: 1x to 3.5x
  *          the time per call of a plain -O2 build (bench/mist_bench.c:
- *          the cheap ones most, mist_hg_samplef 3.5x (measured before its
- *          one-form rewrite; not measured since), mist_fog_evalf 2.8x,
- *          mist_hg_evalf 2.2x; the iterative samplers 1.0x to 1.1x); the
- *          batch forms vectorise and take 0.3x to 1.1x.
+ *          the cheap ones most, mist_fog_evalf 2.8x, mist_hg_evalf 2.2x
+ *          (2.6x in a later busy session: 5.9 against 2.2 ns, best of three
+ *          runs each), mist_hg_samplef 1.5x (3.1 against 2.1 ns, the same
+ *          runs; 3.5x before its one-form rewrite); the iterative samplers
+ *          1.0x to 1.1x); the batch forms vectorise and take 0.3x to 1.1x.
  *   clang  #pragma float_control(precise, on): inlined, no slower than
  *          -O2.  One gap (clang 14): calls of libm functions keep their
  *          fast-math flags, so a float square root may come from the
