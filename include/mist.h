@@ -46,11 +46,11 @@
  *   within the bar, Draine and Cornette-Shanks within 2x of it (6x for
  *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
  *   or two below the one before; tests/test_accuracy.c counts them, built as
- *   test_accuracy_nold).  Except double HG sampling where fma is one
- *   instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or later, CUDA
- *   device code): there it runs in double-double, correctly rounded in
- *   practice and monotone, with or without long double, and its batch form
- *   vectorises.  Float is the same everywhere.
+ *   test_accuracy_nold).  Except the double HG and Rayleigh samplers where
+ *   fma is one instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or
+ *   later, CUDA device code): there they finish in double-double, correctly
+ *   rounded in practice and monotone, with or without long double, and
+ *   their batch forms vectorise.  Float is the same everywhere.
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
@@ -77,8 +77,9 @@
  *                 instead of guarding against them (see FAST MATH).
  *   MIST_NO_LONG_DOUBLE  run the double samplers in double even where long
  *                 double is wider: what MSVC, ARM Macs and CUDA device code
- *                 get (see above): Rayleigh ~2x faster, Draine ~1.7x, for
- *                 those bars and no monotonicity (README "Speed").
+ *                 get (see above): Draine ~1.7x faster, Rayleigh ~2x
+ *                 (without fma), for those bars and no monotonicity
+ *                 (README "Speed").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -120,10 +121,10 @@
  *   evals of HG and Draine) vectorise only where sqrt need not set errno
  *   (-fno-math-errno, implied by -ffast-math; the default on macOS).  The
  *   float HG and Rayleigh samplers (one straight-line form in double) are
- *   vectorised, and so is the double HG sampler where it runs in
- *   double-double (FP_FAST_FMA) or, with AVX, in double alone.  The double
- *   Rayleigh sampler and the double HG sampler in long double are plain
- *   loops, as fast as the scalar calls, not faster.  The unprepared Draine sampler is a loop below
+ *   vectorised, and so are the double HG and Rayleigh samplers where they
+ *   run in double-double (FP_FAST_FMA), and the double HG sampler in double
+ *   alone with AVX.  In long double they are plain loops, as fast as the
+ *   scalar calls, not faster.  The unprepared Draine sampler is a loop below
  *   MIST_DRAINE_PREPARE_N (1024) elements; from there on it prepares the
  *   medium once and returns the prepared sampler's values (the one
  *   exception to "bit for bit": the same bar, monotone in xi, but the
@@ -557,11 +558,12 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
  * MIST__M(f) the libm function for it (sqrt / sqrtf), MIST__C(x) a constant
  * of that type. */
 #define MIST__C(x) ((MIST__T)(x))
-/* the double HG sampler in double-double (see "Henyey-Greenstein: exact
- * sampling"): double where fma is one instruction */
+/* the double HG and Rayleigh samplers in double-double (see "Henyey-
+ * Greenstein: exact sampling", "Rayleigh: exact sampling"): double where
+ * fma is one instruction */
 #if (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)) && !defined(MIST__W_EXACT) \
     && !defined(MIST__INTERNAL_ONLY)
-#  define MIST__HG_DD 1
+#  define MIST__DD 1
 #endif
 
 /* ======================================================================== */
@@ -748,7 +750,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y
     return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
 }
 
-#if defined(MIST__HG_DD)
+#if defined(MIST__DD)
 /* DOUBLE-DOUBLE (see the section comment): u for g in [0, 1) at x = xh + xl,
  * y = yh + yl = 1 - x exactly (one of the pairs has lo = 0) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dd)(MIST__T g, MIST__T xh, MIST__T xl, MIST__T yh,
@@ -844,9 +846,13 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* <= 1.9e-3), then two Halley steps (cubic convergence: ~1e-8, then        */
 /* rounding): measured <= 3.2 ulps of v in the type it runs in over 2e4     */
 /* random x.  No branch, no libm call: the float batch form vectorises.    */
-/* Double evaluates it in long double, float in double (as HG).  Without a  */
-/* wider long double, double in double: within the bar (test_accuracy_nold) */
-/* but not monotone in adjacent xi.                                         */
+/* Double evaluates it in long double, float in double (as HG).  Where fma  */
+/* is one instruction (as HG) double finishes in double-double instead: one */
+/* Newton step on the residual by compensated Horner with fma, u = v - 1    */
+/* summed exactly (mist__rayleigh_udd; 199983 of 2e5 random xi, down to     */
+/* 2^-1074, the rounded float128 root; 0 reversed adjacent pairs; the batch */
+/* form vectorises).  Without either, double in double: within the bar     */
+/* (test_accuracy_nold) but not monotone in adjacent xi.                    */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2] */
@@ -871,6 +877,33 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_u)(MIST__T xi)
     MIST__T s = xi > MIST__C(0.5) ? MIST__C(-1) : MIST__C(1);
     return s * (MIST__FN(mist__rayleigh_v)(x) - MIST__C(1));
 }
+
+#if defined(MIST__DD)
+/* DOUBLE-DOUBLE (see the section comment): mist__rayleigh_u to ~2^-100.
+ * The residual p(v) = ((v - 3) v + 6) v - 8x at the double root by
+ * compensated Horner with fma (as if in twice the precision), one Newton
+ * step as a correction -p/p', and u = v - 1 summed exactly before its one
+ * rounding. */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_udd)(MIST__T xi)
+{
+    MIST__T y = MIST__C(1) - xi, x = xi < y ? xi : y;
+    MIST__T sg = xi > MIST__C(0.5) ? MIST__C(-1) : MIST__C(1);
+    MIST__T v = MIST__FN(mist__rayleigh_v)(x), s, p, e, b, c, t, d;
+    s = v - MIST__C(3); b = s - v;                   /* two-sum v + -3 */
+    c = (v - (s - b)) + (MIST__C(-3) - b);
+    p = s * v; e = MIST__M(fma)(s, v, -p);           /* times v, + 6 */
+    s = p + MIST__C(6); b = s - p;
+    c = c * v + (e + ((p - (s - b)) + (MIST__C(6) - b)));
+    p = s * v; e = MIST__M(fma)(s, v, -p);           /* times v, - 8x */
+    t = -MIST__C(8) * x;
+    s = p + t; b = s - p;
+    c = c * v + (e + ((p - (s - b)) + (t - b)));
+    d = (s + c) / ((MIST__C(3) * v - MIST__C(6)) * v + MIST__C(6));   /* Newton */
+    s = v - MIST__C(1); b = s - v;                   /* (v - d) - 1 */
+    c = (v - (s - b)) + (MIST__C(-1) - b);
+    return sg * (s + (c - d));
+}
+#endif
 #endif /* !MIST_NO_RAYLEIGH */
 
 #ifndef MIST__INTERNAL_ONLY
@@ -952,7 +985,7 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 }
 #endif
 
-#if defined(MIST__HG_DD)
+#if defined(MIST__DD)
 /* the double sampler in double-double: sanitised |g| < 1, xi in [0, 1];
  * g < 0 by the mirror u(g, xi) = -u(-g, 1 - xi), 1 - xi as an exact pair */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_ddu)(MIST__T g, MIST__T xi)
@@ -991,7 +1024,7 @@ MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
     MIST__W x = (MIST__W)xi, y = (MIST__W)1 - x;
     return g >= MIST__C(0) ?  (MIST__T)MIST__WFN(mist__hg_one)((MIST__W)g, x, y)
                            : -(MIST__T)MIST__WFN(mist__hg_one)(-(MIST__W)g, y, x);
-#elif defined(MIST__HG_DD)
+#elif defined(MIST__DD)
     return MIST__FN(mist__hg_ddu)(g, xi);
 #elif defined(MIST__W)
     return (MIST__T)MIST__WFN(mist__hg_sample)((MIST__W)g, (MIST__W)xi);
@@ -1429,7 +1462,9 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 {
     MIST__T u;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
-#ifdef MIST__W   /* in the wide type */
+#if defined(MIST__DD)
+    u = MIST__FN(mist__rayleigh_udd)(xi);
+#elif defined(MIST__W)   /* in the wide type */
     u = (MIST__T)MIST__WFN(mist__rayleigh_u)((MIST__W)xi);
 #else
     u = MIST__FN(mist__rayleigh_u)(xi);
@@ -1932,7 +1967,7 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
                          y_[j_] = -(MIST__T)MIST__WFN(mist__hg_one)(gw, 1 - x, x))
         }
     }
-#elif defined(MIST__HG_DD)
+#elif defined(MIST__DD)
     {   /* double-double (mist__hg_ddu), branch-free: the mirror by selects,
          * 0 and 1 read at run time (see below) */
         volatile MIST__T z0 = 0;
@@ -2030,8 +2065,9 @@ MIST__F void MIST__FN(mist_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, siz
 }
 
 /* Rayleigh sample of each in[i] = xi: mist_rayleigh_sample (float:
- * vectorised, the same root in double; double: a plain loop, its root is
- * in long double). */
+ * vectorised, the same root in double; double: vectorised in double-double
+ * where fma is one instruction, else a plain loop, its root in long
+ * double). */
 MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, size_t n)
 {
 #if defined(MIST__W_EXACT)
@@ -2039,6 +2075,11 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
     MIST__T z = z0, one = z + 1;
     MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
                  y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_u)(x)))
+#elif defined(MIST__DD)
+    volatile MIST__T z0 = 0;
+    MIST__T z = z0, one = z + 1;
+    MIST__BLOCKS(MIST__T x = MIST__FN(mist__clamp01)(x_[j_], z, one);
+                 y_[j_] = MIST__FN(mist__clamp11)(MIST__FN(mist__rayleigh_udd)(x)))
 #else
     size_t i;
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_rayleigh_sample)(in[i]);
@@ -3374,7 +3415,7 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 #endif /* !MIST__INTERNAL_ONLY */
 
 #undef MIST__C
-#undef MIST__HG_DD
+#undef MIST__DD
 
 #endif /* MIST__TEMPLATE */
 
