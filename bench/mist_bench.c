@@ -499,7 +499,11 @@ static void batch_rows(void)
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf", n_rayleigh_samplef, b_rayleigh_samplef);
+#if defined(FP_FAST_FMA)
+    row_speedup("mist_rayleigh_sample_n (double-double)", n_rayleigh_sample, b_rayleigh_sample);
+#else
     row_speedup("mist_rayleigh_sample_n  (loop)", n_rayleigh_sample, b_rayleigh_sample);
+#endif
 }
 
 /* ---- object-code size ---------------------------------------------------- */
