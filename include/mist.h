@@ -661,10 +661,11 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /*     above where xi >= 1/4, the middle form below.                        */
 /* Measured against the float128 inversion: 0.43x the bar for |g| <= 1/4,  */
 /* 0.74x above (1e5 random (g, xi) each; tests/test_accuracy.c checks it    */
-/* with MIST_NO_LONG_DOUBLE).  Cost (./build/mist_bench, three runs, busy   */
-/* machine): 1.5-2.5x eq. 3 in double at g = 0.1, 2.2-3.5x at 0.8, 3.3-6x   */
-/* at 0.3-0.5 (the branch to the second stage mispredicts), against 4.2-6.3x */
-/* for the long double forms in the same runs.                              */
+/* with MIST_NO_LONG_DOUBLE).  Cost (./build/mist_bench, busy machine,     */
+/* -march=native): 1.5-2.5x eq. 3 in double at g = 0.1, 2.2-3.5x at 0.8,    */
+/* 3.3-6x at 0.3-0.5 (the branch to the second stage mispredicts), against  */
+/* 4.2-6.3x for the long double forms in the same runs; ~4x at every g      */
+/* built with -mno-fma (bench/nold.c now: gcc's -mno-fma drops AVX-512).    */
 /* But with errors of an ulp or two these are not monotone in adjacent xi: */
 /* 0.01-2.5% of adjacent double pairs come out reversed (g .1 to .8;        */
 /* measured over 1e7 each).  Monotone and within the bar needs ~11 more     */
