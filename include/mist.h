@@ -852,8 +852,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* Newton step on the residual by compensated Horner with fma, u = v - 1    */
 /* summed exactly (mist__rayleigh_udd; 199983 of 2e5 random xi, down to     */
 /* 2^-1074, the rounded float128 root; 0 reversed adjacent pairs; the batch */
-/* form vectorises).  Without either, double in double: within the bar     */
-/* (test_accuracy_nold) but not monotone in adjacent xi.                    */
+/* form vectorises; scalar 1.17x the long double version, measured side by  */
+/* side: the compensated Horner is a chain).  Without either, double in     */
+/* double: within the bar (test_accuracy_nold) but not monotone in adjacent */
+/* xi.                                                                      */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2] */
