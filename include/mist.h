@@ -595,6 +595,56 @@ MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
 #endif
 }
 
+#ifndef MIST__INTERNAL_ONLY
+/* Error-free transformations (the height fog's compensated sums, the double
+ * HG and Rayleigh samplers in double-double). */
+/* the largest finite T */
+#define MIST__BIG   ((MIST__T)(MIST__EPS < 1e-10 ? DBL_MAX : FLT_MAX))
+
+/* s + *e = a + b exactly where |a| >= |b| (or a = 0; Dekker's Fast2Sum). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__fast_two_sum)(MIST__T a, MIST__T b, MIST__T *e)
+{
+    MIST__T s = a + b;
+    *e = b - (s - a);
+    return s;
+}
+
+/* s + *e = a + b exactly (Knuth's TwoSum). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__two_sum)(MIST__T a, MIST__T b, MIST__T *e)
+{
+    MIST__T s = a + b, bb = s - a;
+    *e = (a - (s - bb)) + (b - bb);
+    return s;
+}
+
+/* p + *e = a * b exactly: one fma where the hardware has it, else Dekker's
+ * product (exact also if a compiler fuses its products: they are exact). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__two_prod)(MIST__T a, MIST__T b, MIST__T *e)
+{
+    MIST__T p = a * b;
+#if defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)
+    *e = MIST__M(fma)(a, b, -p);
+#else
+    /* Veltkamp split: 2^27 + 1 (double), 2^12 + 1 (float); a factor so
+     * large that k a overflows is scaled down by 2^32 (2^16) first and
+     * the low part back up, exactly (found by the fuzzer: a float column
+     * whose whole exponent was in the low part became NaN, then 0) */
+    const MIST__T k = (MIST__T)(MIST__EPS < 1e-10 ? 134217729.0 : 4097.0);
+    const MIST__T lim = MIST__BIG / (k + k);
+    const MIST__T dn = (MIST__T)(MIST__EPS < 1e-10 ? 1.0 / 4294967296.0 : 1.0 / 65536.0);
+    MIST__T c, ah, al, d, bh, bl, ps, sc = MIST__C(1);
+    if (!(a <= lim && a >= -lim)) { a *= dn; sc /= dn; }
+    if (!(b <= lim && b >= -lim)) { b *= dn; sc /= dn; }
+    ps = a * b;
+    c = k * a; ah = c - (c - a); al = a - ah;
+    d = k * b; bh = d - (d - b); bl = b - bh;
+    *e = (((ah * bh - ps) + ah * bl + al * bh) + al * bl) * sc;
+#endif
+    return p;
+}
+#endif /* !MIST__INTERNAL_ONLY */
+
+
 /* ======================================================================== */
 /* Henyey-Greenstein and Draine: evaluation                                 */
 /* [HG41], [JD23 eq. 2, 5], [D03]                                           */
@@ -676,9 +726,9 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* with every term as an unevaluated sum hi + lo (products by fma, sums by  */
 /* Knuth's two-sum; 1 - xi exact as such a pair), one division and its     */
 /* remainder by fma (mist__hg_dd).  About 2^-100 of error: correctly        */
-/* rounded in practice (1e5 random (g, xi), g down to 1e-300 and up to 1 -  */
-/* 2^-53, xi down to 2^-1074, against float128: within 0.248x the bar,      */
-/* 99951 the rounded root), monotone (0 reversed adjacent pairs in 1.5e7),  */
+/* rounded in practice (bench/mist_ddcheck.c: 1e5 random (g, xi), g down to */
+/* 1e-300 and up to 1 - 2^-53, xi down to 2^-1074, against float128: within */
+/* 0.243x the bar, 99961 the rounded root), monotone (0 reversed pairs),    */
 /* branch-free (the batch form vectorises); 3.0-3.5x eq. 3 against ~4x for  */
 /* long double (./build/mist_bench).                                        */
 /* This is the double sampler wherever it applies; elsewhere long double,  */
@@ -757,20 +807,20 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dd)(MIST__T g, MIST__T xh, MIST__T xl, MIST__T yh,
                                                 MIST__T yl)
 {
-    MIST__T oh = MIST__C(1) - g, ol = (MIST__C(1) - oh) - g;             /* 1 - g */
-    MIST__T gh = g * xh, gl = MIST__M(fma)(g, xh, -gh) + g * xl;          /* g x */
-    MIST__T eh = MIST__C(1) + gh, el = (gh - (eh - MIST__C(1))) + gl;     /* 1 + g x */
-    MIST__T dh = oh + MIST__C(2) * gh, dt = dh - oh;                      /* D */
-    MIST__T dl = ((oh - (dh - dt)) + (MIST__C(2) * gh - dt)) + ol + MIST__C(2) * gl;
-    MIST__T qh = dh * dh, ql = MIST__M(fma)(dh, dh, -qh) + MIST__C(2) * dh * dl;   /* D^2 */
-    MIST__T ph = oh * oh, pl = MIST__M(fma)(oh, oh, -ph) + MIST__C(2) * oh * ol;   /* (1-g)^2 */
-    MIST__T ah = yh * ph, al = MIST__M(fma)(yh, ph, -ah) + yh * pl + yl * ph;
-    MIST__T nh = MIST__C(2) * ah * eh;                                    /* nb = 2 y (1-g)^2 (1 + g x) */
-    MIST__T nl = MIST__C(2) * (MIST__M(fma)(ah, eh, -ah * eh) + ah * el + al * eh);
-    MIST__T iv = MIST__C(1) / qh, q1 = nh * iv;                           /* nb / D^2 */
-    MIST__T q2 = (MIST__M(fma)(-q1, qh, nh) + nl - q1 * ql) * iv;
-    MIST__T sh = MIST__C(1) - q1, sb = sh - MIST__C(1);                   /* 1 - q1 exactly */
-    MIST__T sl = (MIST__C(1) - (sh - sb)) + (-q1 - sb);
+    MIST__T oh, ol, gh, gl, eh, el, dh, dl, qh, ql, ph, pl, ah, al, nh, nl, iv, q1, q2, sh, sl;
+    oh = MIST__FN(mist__fast_two_sum)(MIST__C(1), -g, &ol);                    /* 1 - g */
+    gh = MIST__FN(mist__two_prod)(g, xh, &gl); gl += g * xl;                   /* g x */
+    eh = MIST__FN(mist__fast_two_sum)(MIST__C(1), gh, &el); el += gl;         /* 1 + g x */
+    dh = MIST__FN(mist__two_sum)(oh, MIST__C(2) * gh, &dl);                   /* D */
+    dl += ol + MIST__C(2) * gl;
+    qh = MIST__FN(mist__two_prod)(dh, dh, &ql); ql += MIST__C(2) * dh * dl;   /* D^2 */
+    ph = MIST__FN(mist__two_prod)(oh, oh, &pl); pl += MIST__C(2) * oh * ol;   /* (1-g)^2 */
+    ah = MIST__FN(mist__two_prod)(yh, ph, &al); al += yh * pl + yl * ph;      /* y (1-g)^2 */
+    nh = MIST__FN(mist__two_prod)(ah, eh, &nl); nl += ah * el + al * eh;      /* nb / 2 */
+    nh *= MIST__C(2); nl *= MIST__C(2);
+    iv = MIST__C(1) / qh; q1 = nh * iv;                                       /* nb / D^2 */
+    q2 = (MIST__M(fma)(-q1, qh, nh) + nl - q1 * ql) * iv;    /* (the remainder is exact) */
+    sh = MIST__FN(mist__two_sum)(MIST__C(1), -q1, &sl);                       /* 1 - q */
     return sh + (sl - q2);
 }
 
@@ -850,8 +900,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* Double evaluates it in long double, float in double (as HG).  Where fma  */
 /* is one instruction (as HG) double finishes in double-double instead: one */
 /* Newton step on the residual by compensated Horner with fma, u = v - 1    */
-/* summed exactly (mist__rayleigh_udd; 199983 of 2e5 random xi, down to     */
-/* 2^-1074, the rounded float128 root; 0 reversed adjacent pairs; the batch */
+/* summed exactly (mist__rayleigh_udd; bench/mist_ddcheck.c: 19995 of 2e4  */
+/* random xi, down to 2^-1074, the rounded float128 root, 0 reversed; batch */
 /* form vectorises; scalar 1.17x the long double version, measured side by  */
 /* side: the compensated Horner is a chain).  Without either, double in     */
 /* double: within the bar (test_accuracy_nold) but not monotone in adjacent */
@@ -891,19 +941,16 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_udd)(MIST__T xi)
 {
     MIST__T y = MIST__C(1) - xi, x = xi < y ? xi : y;
     MIST__T sg = xi > MIST__C(0.5) ? MIST__C(-1) : MIST__C(1);
-    MIST__T v = MIST__FN(mist__rayleigh_v)(x), s, p, e, b, c, t, d;
-    s = v - MIST__C(3); b = s - v;                   /* two-sum v + -3 */
-    c = (v - (s - b)) + (MIST__C(-3) - b);
-    p = s * v; e = MIST__M(fma)(s, v, -p);           /* times v, + 6 */
-    s = p + MIST__C(6); b = s - p;
-    c = c * v + (e + ((p - (s - b)) + (MIST__C(6) - b)));
-    p = s * v; e = MIST__M(fma)(s, v, -p);           /* times v, - 8x */
-    t = -MIST__C(8) * x;
-    s = p + t; b = s - p;
-    c = c * v + (e + ((p - (s - b)) + (t - b)));
+    MIST__T v = MIST__FN(mist__rayleigh_v)(x), s, p, e, c, d;
+    s = MIST__FN(mist__fast_two_sum)(MIST__C(-3), v, &c);           /* v - 3 */
+    p = MIST__FN(mist__two_prod)(s, v, &e);                          /* times v, + 6 */
+    s = MIST__FN(mist__fast_two_sum)(MIST__C(6), p, &d);
+    c = c * v + (e + d);
+    p = MIST__FN(mist__two_prod)(s, v, &e);                          /* times v, - 8x */
+    s = MIST__FN(mist__two_sum)(p, -MIST__C(8) * x, &d);
+    c = c * v + (e + d);
     d = (s + c) / ((MIST__C(3) * v - MIST__C(6)) * v + MIST__C(6));   /* Newton */
-    s = v - MIST__C(1); b = s - v;                   /* (v - d) - 1 */
-    c = (v - (s - b)) + (MIST__C(-1) - b);
+    s = MIST__FN(mist__fast_two_sum)(MIST__C(-1), v, &c);           /* (v - d) - 1 */
     return sg * (s + (c - d));
 }
 #endif
@@ -993,7 +1040,7 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
  * g < 0 by the mirror u(g, xi) = -u(-g, 1 - xi), 1 - xi as an exact pair */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_ddu)(MIST__T g, MIST__T xi)
 {
-    MIST__T c = MIST__C(1) - xi, cl = (MIST__C(1) - c) - xi, u;
+    MIST__T cl, c = MIST__FN(mist__fast_two_sum)(MIST__C(1), -xi, &cl), u;      /* 1 - xi */
     u = g >= MIST__C(0) ?  MIST__FN(mist__hg_dd)( g, xi, MIST__C(0), c, cl)
                         : -MIST__FN(mist__hg_dd)(-g, c, cl, xi, MIST__C(0));
     return MIST__FN(mist__clamp11)(u);
@@ -1976,7 +2023,7 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1, ga = g < z ? -g : g, neg = g < z ? one : z;
         MIST__BLOCKS(MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-                     MIST__T c = one - xi; MIST__T cl = (one - c) - xi;
+                     MIST__T cl; MIST__T c = MIST__FN(mist__fast_two_sum)(one, -xi, &cl);
                      MIST__T u = MIST__FN(mist__hg_dd)(ga, neg > z ? c : xi, neg > z ? cl : z,
                                                       neg > z ? xi : c, neg > z ? z : cl);
                      y_[j_] = MIST__FN(mist__clamp11)(u) * (one - MIST__C(2) * neg))
@@ -2288,8 +2335,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 #define MIST__RGB   MIST__FN(mist_rgb)
 #define MIST__HFOG  MIST__FN(mist_hfog)
 #define MIST__HRAY  MIST__FN(mist__hray)
-/* the largest finite T, and a bound on |x| with exp(+-x) normal */
-#define MIST__BIG   ((MIST__T)(MIST__EPS < 1e-10 ? DBL_MAX : FLT_MAX))
+/* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
 #define MIST__XLIM  MIST__C(MIST__EPS < 1e-10 ? 700 : 85)
 
 /* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
@@ -2299,40 +2345,6 @@ MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
 }
 
 MIST__F int MIST__FN(mist__finite)(MIST__T x) { return x - x == MIST__C(0); }
-
-/* s + *e = a + b exactly (Knuth's TwoSum). */
-MIST__F MIST__T MIST__FN(mist__two_sum)(MIST__T a, MIST__T b, MIST__T *e)
-{
-    MIST__T s = a + b, bb = s - a;
-    *e = (a - (s - bb)) + (b - bb);
-    return s;
-}
-
-/* p + *e = a * b exactly: one fma where the hardware has it, else Dekker's
- * product (exact also if a compiler fuses its products: they are exact). */
-MIST__F MIST__T MIST__FN(mist__two_prod)(MIST__T a, MIST__T b, MIST__T *e)
-{
-    MIST__T p = a * b;
-#if defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)
-    *e = MIST__M(fma)(a, b, -p);
-#else
-    /* Veltkamp split: 2^27 + 1 (double), 2^12 + 1 (float); a factor so
-     * large that k a overflows is scaled down by 2^32 (2^16) first and
-     * the low part back up, exactly (found by the fuzzer: a float column
-     * whose whole exponent was in the low part became NaN, then 0) */
-    const MIST__T k = (MIST__T)(MIST__EPS < 1e-10 ? 134217729.0 : 4097.0);
-    const MIST__T lim = MIST__BIG / (k + k);
-    const MIST__T dn = (MIST__T)(MIST__EPS < 1e-10 ? 1.0 / 4294967296.0 : 1.0 / 65536.0);
-    MIST__T c, ah, al, d, bh, bl, ps, sc = MIST__C(1);
-    if (!(a <= lim && a >= -lim)) { a *= dn; sc /= dn; }
-    if (!(b <= lim && b >= -lim)) { b *= dn; sc /= dn; }
-    ps = a * b;
-    c = k * a; ah = c - (c - a); al = a - ah;
-    d = k * b; bh = d - (d - b); bl = b - bh;
-    *e = (((ah * bh - ps) + ah * bl + al * bh) + al * bl) * sc;
-#endif
-    return p;
-}
 
 /* (n + ne) / H as hi + *lo (|lo| <= ~ulp(hi)): the remainder of the
  * rounded quotient is exact.  n + ne is renormalised first: a sum whose
