@@ -506,6 +506,350 @@ static void batch_rows(void)
 #endif
 }
 
+/* ---- every other public function ------------------------------------------ */
+
+/* The rest of the public evaluation and sampling functions (issue 5: "every
+ * public evaluation and sampling function, float and double"), each beside
+ * a baseline of the same run: the formula as printed (tests/mist_printed.h)
+ * where there is one, else the scalar function it builds on (the direction
+ * samplers against their u samplers: the cost of the direction), else its
+ * float version. */
+static const float  cs_g = 0.7f;
+static mist_phasef  ph_rlf;
+static mist_phase   ph_rl, ph_drd;
+static mist_fog     fog_d;
+static mist_fogf    fog_f;
+#define DIRLOOP(T, V3, CALL) { V3 wi = { (T)0.48, (T)-0.6, (T)0.64 }, wo; T pdf = 0, s_ = 0; \
+    int i; for (i = 0; i < N; ++i) { wo = CALL; s_ += wo.x + pdf; } return (double)s_; }
+#define XI2F xf[N - 1 - i]
+#define XI2D xd[N - 1 - i]
+static double c_eq5f(void)           LOOP(float, draine_eval_printed(0.5f, 17.f, uf[i]))
+static double c_eq5f_cs(void)        LOOP(float, draine_eval_printed(cs_g, 1.f, uf[i]))
+static double c_cs_evalf(void)       LOOP(float, mist_cs_evalf(cs_g, uf[i]))
+static double c_cs_eval(void)        LOOP(double, mist_cs_eval(cs_g, ud[i]))
+static double c_rl_printedf(void)    LOOP(float, rayleigh_eval_printed(uf[i]))
+static double c_fog_printedf(void)   LOOP(float, fog_eval_printed(fog_f.g_hg, fog_f.g_d,
+                                                                  fog_f.alpha, fog_f.w_d, uf[i]))
+static double c_fog_eval(void)       LOOP(double, mist_fog_eval(fog_d, ud[i]))
+static double c_phase_dr_eval(void)  LOOP(double, mist_phase_eval(&ph_drd, ud[i]))
+static double c_phase_rl_evalf(void) LOOP(float, mist_phase_evalf(&ph_rlf, uf[i]))
+static double c_phase_rl_eval(void)  LOOP(double, mist_phase_eval(&ph_rl, ud[i]))
+static double c_cs_samplef(void)     LOOP(float, mist_cs_samplef(cs_g, xf[i]))
+static double c_cs_sample(void)      LOOP(double, mist_cs_sample(cs_g, xd[i]))
+static double c_fog_samplef(void)    LOOP(float, mist_fog_samplef(fog_f, xf[i]))
+static double c_fog_sample(void)     LOOP(double, mist_fog_sample(fog_d, xd[i]))
+static double c_phase_rl_samplef(void) LOOP(float, mist_phase_samplef(&ph_rlf, xf[i]))
+static double c_phase_rl_sample(void)  LOOP(double, mist_phase_sample(&ph_rl, xd[i]))
+static double c_phase_dr_sample(void)  LOOP(double, mist_phase_sample(&ph_drd, xd[i]))
+static double c_phase_eval_n(void)   NCALL(double, mist_phase_eval_n(&ph_drd, ud, out_double, N))
+static double c_fit(void)
+{
+    double s_ = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mist_fog f = mist_fog_from_diameter(5 + 45 * xd[i]);
+        s_ += f.g_hg + f.g_d + f.alpha + f.w_d;
+    }
+    return s_;
+}
+/* directions: mist's, against a bare [DHB17] basis typed in (wi taken as
+ * unit, no checks) and a bare normalisation */
+#define BARE_DIR(T, SQRT, COS, SIN)                                            \
+    T sg = n.z >= 0 ? (T)1 : (T)-1, a = -1 / (sg + n.z), b = n.x * n.y * a;    \
+    T sn = SQRT(1 - u * u), ph = (T)MIST__2PI * xi, c = sn * COS(ph), d = sn * SIN(ph); \
+    r.x = u * n.x + c * (1 + sg * n.x * n.x * a) + d * b;                      \
+    r.y = u * n.y + c * (sg * b) + d * (sg + n.y * n.y * a);                   \
+    r.z = u * n.z - c * (sg * n.x) - d * n.y;                                  \
+    return r;
+static mist_vec3f bare_dirf(mist_vec3f n, float u, float xi)
+{ mist_vec3f r; BARE_DIR(float, sqrtf, cosf, sinf) }
+static mist_vec3 bare_dir(mist_vec3 n, double u, double xi)
+{ mist_vec3 r; BARE_DIR(double, sqrt, cos, sin) }
+#define BARE_NORM(T, V3, SQRT) { V3 r; T k = 1 / SQRT(v.x * v.x + v.y * v.y + v.z * v.z); \
+                                 r.x = v.x * k; r.y = v.y * k; r.z = v.z * k; return r; }
+static mist_vec3f bare_normf(mist_vec3f v) BARE_NORM(float, mist_vec3f, sqrtf)
+static mist_vec3  bare_norm(mist_vec3 v)   BARE_NORM(double, mist_vec3, sqrt)
+static double c_bare_dirf(void)  DIRLOOP(float, mist_vec3f, bare_dirf(wi, uf[i], XI2F))
+static double c_bare_dir(void)   DIRLOOP(double, mist_vec3, bare_dir(wi, ud[i], XI2D))
+static double c_dirf(void)       DIRLOOP(float, mist_vec3f, mist_dir_from_cosf(wi, uf[i], XI2F))
+static double c_dir(void)        DIRLOOP(double, mist_vec3, mist_dir_from_cos(wi, ud[i], XI2D))
+#define NLOOP(T, V3, F) { V3 v; T s_ = 0; int i; for (i = 0; i < N; ++i) { \
+    v.x = (T)ud[i]; v.y = (T)ud[N - 1 - i]; v.z = (T)0.3; v = F(v); s_ += v.x; } return s_; }
+static double c_bare_normf(void) NLOOP(float, mist_vec3f, bare_normf)
+static double c_bare_norm(void)  NLOOP(double, mist_vec3, bare_norm)
+static double c_normf(void)      NLOOP(float, mist_vec3f, mist_normalizef)
+static double c_norm(void)       NLOOP(double, mist_vec3, mist_normalize)
+static double c_hg_dir(void)     DIRLOOP(double, mist_vec3, mist_hg_sample_dir(0.8, wi, xd[i], XI2D, &pdf))
+static double c_dr_dirf(void)    DIRLOOP(float, mist_vec3f,
+                                         mist_draine_sample_dirf(0.5f, 17.f, wi, xf[i], XI2F, &pdf))
+static double c_dr_dir(void)     DIRLOOP(double, mist_vec3,
+                                         mist_draine_sample_dir(0.5, 17., wi, xd[i], XI2D, &pdf))
+static double c_cs_dirf(void)    DIRLOOP(float, mist_vec3f, mist_cs_sample_dirf(cs_g, wi, xf[i], XI2F, &pdf))
+static double c_cs_dir(void)     DIRLOOP(double, mist_vec3, mist_cs_sample_dir(cs_g, wi, xd[i], XI2D, &pdf))
+static double c_rl_dirf(void)    DIRLOOP(float, mist_vec3f, mist_rayleigh_sample_dirf(wi, xf[i], XI2F, &pdf))
+static double c_rl_dir(void)     DIRLOOP(double, mist_vec3, mist_rayleigh_sample_dir(wi, xd[i], XI2D, &pdf))
+static double c_fog_dirf(void)   DIRLOOP(float, mist_vec3f, mist_fog_sample_dirf(fog_f, wi, xf[i], XI2F, &pdf))
+static double c_fog_dir(void)    DIRLOOP(double, mist_vec3, mist_fog_sample_dir(fog_d, wi, xd[i], XI2D, &pdf))
+static double c_ph_dirf(void)    DIRLOOP(float, mist_vec3f,
+                                         mist_phase_sample_dirf(&ph_drf, wi, xf[i], XI2F, &pdf))
+static double c_ph_dir(void)     DIRLOOP(double, mist_vec3,
+                                         mist_phase_sample_dir(&ph_drd, wi, xd[i], XI2D, &pdf))
+
+/* the height fog [I18]: a layer of haze and fog (coefficients per metre at
+ * the base, scale height 120 m), rays from heights 0-500 m in random
+ * directions over 1-2000 m; against eq. 22-23 typed in (three channels,
+ * the same phase values, tests/mist_printed.h: hfog_printed) */
+static mist_hfogf hff[2];
+static mist_hfog  hfd[2];
+static mist_vec3f ray_of[N], ray_df[N];
+static mist_vec3  ray_od[N], ray_dd[N];
+static float ray_sf[N];
+static int hfog_deep;   /* 1: rays go on below the base (to y = -1500), into fog e^12 denser */
+static double ray_sd[N];
+#define HFOG_INIT(F, T)                                                        \
+    F[0].base = 0; F[0].density = 1; F[0].scale_height = 120;                  \
+    F[0].rayleigh_scat.r = (T)5.8e-6; F[0].rayleigh_scat.g = (T)1.35e-5;       \
+    F[0].rayleigh_scat.b = (T)3.31e-5; F[0].rayleigh_ext = F[0].rayleigh_scat; \
+    F[0].mie_scat.r = F[0].mie_scat.g = F[0].mie_scat.b = (T)2e-3;             \
+    F[0].mie_ext.r = F[0].mie_ext.g = F[0].mie_ext.b = (T)2.2e-3;              \
+    F[0].sun_dir.x = (T)0.3; F[0].sun_dir.y = (T)0.5; F[0].sun_dir.z = (T)0.812404; \
+    F[0].sun.r = 1; F[0].sun.g = (T)0.95; F[0].sun.b = (T)0.9;                 \
+    F[0].ambient.r = (T)0.1; F[0].ambient.g = (T)0.12; F[0].ambient.b = (T)0.15; \
+    F[0].sun_extinction = 0;                                                   \
+    F[1] = F[0]; F[1].base = 300; F[1].scale_height = 800; F[1].density = (T)0.2;
+static void hfog_setup(void)
+{
+    int i;
+    memset(hff, 0, sizeof hff);
+    memset(hfd, 0, sizeof hfd);
+    hff[0].mie_phase = fog_f;
+    hfd[0].mie_phase = fog_d;
+    HFOG_INIT(hff, float)
+    HFOG_INIT(hfd, double)
+    for (i = 0; i < N; ++i) {
+        double z = ud[i], t = MIST__2PI * xd[(i * 7 + 3) % N], r = sqrt(1 - z * z);
+        ray_od[i].x = 0; ray_od[i].y = 500 * xd[(i * 13 + 5) % N]; ray_od[i].z = 0;
+        ray_dd[i].x = r * cos(t); ray_dd[i].y = z; ray_dd[i].z = r * sin(t);
+        ray_sd[i] = 1 + 1999 * xd[(i * 29 + 11) % N];
+        if (hfog_deep == 0 && z < 0 && ray_od[i].y + z * ray_sd[i] < 0)
+            ray_sd[i] = ray_od[i].y / -z;           /* the ray ends on the ground, y = 0 */
+        ray_of[i].x = (float)ray_od[i].x; ray_of[i].y = (float)ray_od[i].y; ray_of[i].z = 0;
+        ray_df[i].x = (float)ray_dd[i].x; ray_df[i].y = (float)ray_dd[i].y;
+        ray_df[i].z = (float)ray_dd[i].z;
+        ray_sf[i] = (float)ray_sd[i];
+    }
+}
+/* eq. 22-23 for one ray, three channels, background 1 */
+#define PRINTED_RAY(T, FN, F, O, D, S)                                                 \
+    T u = F.sun_dir.x * D.x + F.sun_dir.y * D.y + F.sun_dir.z * D.z;                   \
+    T pr = rayleigh_eval_printed((float)u), pm = fog_eval_printed(F.mie_phase.g_hg,    \
+        F.mie_phase.g_d, F.mie_phase.alpha, F.mie_phase.w_d, (float)u);                \
+    T y0 = O.y - F.base, H = F.scale_height;                                           \
+    T r_ = FN(1, y0, D.y, S, H, F.rayleigh_ext.r + F.mie_ext.r, F.rayleigh_scat.r * (pr * F.sun.r \
+              + F.ambient.r) + F.mie_scat.r * (pm * F.sun.r + F.ambient.r));           \
+    T g_ = FN(1, y0, D.y, S, H, F.rayleigh_ext.g + F.mie_ext.g, F.rayleigh_scat.g * (pr * F.sun.g \
+              + F.ambient.g) + F.mie_scat.g * (pm * F.sun.g + F.ambient.g));           \
+    T b_ = FN(1, y0, D.y, S, H, F.rayleigh_ext.b + F.mie_ext.b, F.rayleigh_scat.b * (pr * F.sun.b \
+              + F.ambient.b) + F.mie_scat.b * (pm * F.sun.b + F.ambient.b));
+static double c_hf_printedf(void)
+{
+    float s_ = 0;
+    int i;
+    for (i = 0; i < N; ++i) { PRINTED_RAY(float, hfog_printedf, hff[0], ray_of[i], ray_df[i],
+                                          ray_sf[i]) s_ += r_ + g_ + b_; }
+    return s_;
+}
+static double c_hf_printed(void)
+{
+    double s_ = 0;
+    int i;
+    for (i = 0; i < N; ++i) { PRINTED_RAY(double, hfog_printed, hfd[0], ray_od[i], ray_dd[i],
+                                          ray_sd[i]) s_ += r_ + g_ + b_; }
+    return s_;
+}
+#define RGBLOOP(T, RGB, CALL) { T s_ = 0; int i; for (i = 0; i < N; ++i) { RGB c_ = CALL; \
+    s_ += c_.r + c_.g + c_.b; } return s_; }
+static double c_hf_trf(void) RGBLOOP(float, mist_rgbf,
+                                     mist_hfog_transmittancef(hff, ray_of[i], ray_df[i], ray_sf[i]))
+static double c_hf_tr(void)  RGBLOOP(double, mist_rgb,
+                                     mist_hfog_transmittance(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
+static double c_hf_inf(void) RGBLOOP(float, mist_rgbf,
+                                     mist_hfog_inscatterf(hff, ray_of[i], ray_df[i], ray_sf[i]))
+static double c_hf_in(void)  RGBLOOP(double, mist_rgb,
+                                     mist_hfog_inscatter(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
+static mist_rgbf bg_f = { 1, 1, 1 };
+static mist_rgb  bg_d = { 1, 1, 1 };
+static double c_hf_apf(void) RGBLOOP(float, mist_rgbf,
+                                     mist_hfog_applyf(hff, ray_of[i], ray_df[i], ray_sf[i], bg_f))
+static double c_hf_ap(void)  RGBLOOP(double, mist_rgb,
+                                     mist_hfog_apply(hfd, ray_od[i], ray_dd[i], ray_sd[i], bg_d))
+#define EVLOOP(T, RGB, FN, F, O, D, S) { T s_ = 0; int i; for (i = 0; i < N; ++i) { RGB t_, l_; \
+    FN(F, O[i], D[i], S[i], &t_, &l_); s_ += t_.r + l_.g; } return s_; }
+static double c_hf_evf(void) EVLOOP(float, mist_rgbf, mist_hfog_evalf, hff, ray_of, ray_df, ray_sf)
+static double c_hf_ev(void)  EVLOOP(double, mist_rgb, mist_hfog_eval, hfd, ray_od, ray_dd, ray_sd)
+#define LYLOOP(T, RGB, FN, F, O, D, S) { T s_ = 0; int i; for (i = 0; i < N; ++i) { RGB t_, l_, e_; \
+    FN(F, 2, O[i], D[i], S[i], 8, &t_, &l_, &e_); s_ += t_.r + l_.g; } return s_; }
+static double c_hf_lyf(void) LYLOOP(float, mist_rgbf, mist_hfog_layers_evalf, hff, ray_of, ray_df, ray_sf)
+static double c_hf_ly(void)  LYLOOP(double, mist_rgb, mist_hfog_layers_eval, hfd, ray_od, ray_dd, ray_sd)
+/* the column alone against eq. 14's exponent as printed */
+static double c_col_printedf(void) LOOP(float, 120.f / ray_df[i].y * expf(-ray_of[i].y / 120.f)
+                                             * (1 - expf(-ray_df[i].y * ray_sf[i] / 120.f)))
+static double c_colf(void) LOOP(float, mist_hfog_columnf(hff, ray_of[i].y, ray_df[i].y, ray_sf[i]))
+static double c_col(void)  LOOP(double, mist_hfog_column(hfd, ray_od[i].y, ray_dd[i].y, ray_sd[i]))
+/* a ray-march step: against the constant-coefficient step a renderer
+ * might use instead, s/k (1 - e^(-k L)) with the mean k and s */
+static float seg_constf(float k0, float k1, float s0, float s1, float L)
+{
+    float k = (k0 + k1) / 2, s = (s0 + s1) / 2;
+    return s / k * (1 - expf(-k * L));
+}
+static double c_seg_constf(void) LOOP(float, seg_constf(uf[i] + 1.5f, xf[i], 0.5f + xf[N - 1 - i],
+                                                        0.2f, 0.01f + 4 * xf[(i * 7) % N]))
+static double c_segf(void) LOOP(float, mist_segment_linearf(uf[i] + 1.5f, xf[i], 0.5f + xf[N - 1 - i],
+                                                           0.2f, 0.01f + 4 * xf[(i * 7) % N], NULL))
+static double c_seg(void)  LOOP(double, mist_segment_linear(ud[i] + 1.5, xd[i], 0.5 + xd[N - 1 - i],
+                                                           0.2, 0.01 + 4 * xd[(i * 7) % N], NULL))
+
+/* Preparing a medium (mist_phase_*, mist_fog_make): microseconds per call,
+ * median of REPS calls (the Draine table is the cost). */
+static double prep_us(int which)
+{
+    double t[REPS];
+    int i;
+    for (i = 0; i < REPS; ++i) {
+        double t0 = now();
+        switch (which) {
+        case 0: ph_rlf = mist_phase_drainef(0.5f + 1e-3f * (float)i, 17.f); sink += ph_rlf.tab[5]; break;
+        case 1: ph_rl = mist_phase_draine(0.5 + 1e-3 * i, 17.); sink += ph_rl.tab[5]; break;
+        case 2: ph_rlf = mist_phase_fogf(mist_fog_from_diameterf(5.f + (float)i));
+                sink += ph_rlf.tab[5]; break;
+        default: ph_rl = mist_phase_fog(mist_fog_from_diameter(5. + i)); sink += ph_rl.tab[5]; break;
+        }
+        t[i] = (now() - t0) * 1e6;
+    }
+    sort(t, REPS);
+    return t[REPS / 2];
+}
+static double c_prep_hgf(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_phasef p = mist_phase_hgf(uf[i]); s_ += p.a1; } return s_; }
+static double c_fog_makef(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_fogf f = mist_fog_makef(uf[i], 0.5f, 17.f * xf[i], xf[N - 1 - i]); s_ += f.alpha; } return s_; }
+static double c_fog_make(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_fog f = mist_fog_make(ud[i], 0.5, 17. * xd[i], xd[N - 1 - i]); s_ += f.alpha; } return s_; }
+
+static void coverage_rows(void)
+{
+    bench_fn base;
+    fog_f = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+    fog_d = mist_fog_make(0.988, 0.556, 22.0, 0.482);
+    ph_rlf = mist_phase_rayleighf();
+    ph_rl = mist_phase_rayleigh();
+    ph_drd = mist_phase_draine(0.5, 17.);
+    hfog_setup();
+    printf("\nEvery other public function, against its printed formula, the function it "
+           "builds on, or its float version:\n");
+    base = c_eq5f;
+    row("eq. 5 Draine eval as printed (float)", c_eq5f, NULL, NULL);
+    row("mist_draine_evalf (g .5, a 17)", b_draine_evalf, "eq. 5", base);
+    row("mist_draine_eval  (g .5, a 17)", b_draine_eval, "eq. 5", base);
+    row("mist_phase_eval (Draine .5, 17)", c_phase_dr_eval, "eq. 5", base);
+    base = c_eq5f_cs;
+    row("eq. 5 at alpha 1 (CS, float)", c_eq5f_cs, NULL, NULL);
+    row("mist_cs_evalf (g .7)", c_cs_evalf, "eq. 5", base);
+    row("mist_cs_eval  (g .7)", c_cs_eval, "eq. 5", base);
+    base = c_rl_printedf;
+    row("Rayleigh eval as printed (float)", c_rl_printedf, NULL, NULL);
+    row("mist_rayleigh_evalf", b_rayleigh_evalf, "printed", base);
+    row("mist_rayleigh_eval", b_rayleigh_eval, "printed", base);
+    row("mist_phase_evalf (Rayleigh)", c_phase_rl_evalf, "printed", base);
+    row("mist_phase_eval  (Rayleigh)", c_phase_rl_eval, "printed", base);
+    base = c_fog_printedf;
+    row("eq. 2 + 5 fog mixture as printed", c_fog_printedf, NULL, NULL);
+    row("mist_fog_evalf (d = 10 um)", b_fog_evalf, "printed", base);
+    row("mist_fog_eval  (d = 10 um)", c_fog_eval, "printed", base);
+    base = b_eq6f_cs;
+    row("eq. 6 float (g .7, a 1)", b_eq6f_cs, NULL, NULL);
+    row("mist_cs_sample (g .7)", c_cs_sample, "eq. 6 float", base);
+    base = b_fog_samplef;
+    row("mist_fog_sample (d = 10 um)", c_fog_sample, "mist_fog_samplef", base);
+    base = b_rayleigh_samplef;
+    row("mist_phase_samplef (Rayleigh)", c_phase_rl_samplef, "mist_rayleigh_samplef", base);
+    base = b_rayleigh_sample;
+    row("mist_phase_sample  (Rayleigh)", c_phase_rl_sample, "mist_rayleigh_sample", base);
+    row_speedup("mist_phase_eval_n (Draine .5, 17)", c_phase_eval_n, c_phase_dr_eval);
+    base = b_fit_mistf;
+    row("mist_fog_from_diameter (5-50 um)", c_fit, "float", base);
+    base = c_fog_makef;
+    row("mist_fog_makef", c_fog_makef, NULL, NULL);
+    row("mist_fog_make", c_fog_make, "float", base);
+    row("mist_phase_hgf (prepare HG)", c_prep_hgf, "mist_fog_makef", base);
+    printf("%-34s %8.2f us  (median of %d; double: %.2f us)\n", "mist_phase_drainef (prepare)",
+           prep_us(0), REPS, prep_us(1));
+    printf("%-34s %8.2f us  (median of %d; double: %.2f us)\n", "mist_phase_fogf (prepare)",
+           prep_us(2), REPS, prep_us(3));
+
+    printf("\nDirections (wi fixed, xi pairs from the stream):\n");
+    base = c_bare_dirf;
+    row("bare [DHB17] basis (float)", c_bare_dirf, NULL, NULL);
+    row("mist_dir_from_cosf", c_dirf, "bare", base);
+    base = c_bare_dir;
+    row("bare [DHB17] basis (double)", c_bare_dir, NULL, NULL);
+    row("mist_dir_from_cos", c_dir, "bare", base);
+    base = c_bare_normf;
+    row("bare normalisation (float)", c_bare_normf, NULL, NULL);
+    row("mist_normalizef", c_normf, "bare", base);
+    base = c_bare_norm;
+    row("bare normalisation (double)", c_bare_norm, NULL, NULL);
+    row("mist_normalize", c_norm, "bare", base);
+    row("mist_hg_sample_dir (g .8)", c_hg_dir, "mist_hg_sample", b_hg_sample);
+    row("mist_draine_sample_dirf (.5, 17)", c_dr_dirf, "mist_draine_samplef", b_draine_samplef);
+    row("mist_draine_sample_dir  (.5, 17)", c_dr_dir, "mist_draine_sample", b_draine_sample);
+    row("mist_cs_sample_dirf (g .7)", c_cs_dirf, "mist_cs_samplef", c_cs_samplef);
+    row("mist_cs_sample_dir  (g .7)", c_cs_dir, "mist_cs_sample", c_cs_sample);
+    row("mist_rayleigh_sample_dirf", c_rl_dirf, "mist_rayleigh_samplef", b_rayleigh_samplef);
+    row("mist_rayleigh_sample_dir", c_rl_dir, "mist_rayleigh_sample", b_rayleigh_sample);
+    row("mist_fog_sample_dirf (10 um)", c_fog_dirf, "mist_fog_samplef", c_fog_samplef);
+    row("mist_fog_sample_dir  (10 um)", c_fog_dir, "mist_fog_sample", c_fog_sample);
+    row("mist_phase_sample_dirf (Draine)", c_ph_dirf, "mist_phase_samplef", b_phase_draine_samplef);
+    row("mist_phase_sample_dir  (Draine)", c_ph_dir, "mist_phase_sample", c_phase_dr_sample);
+
+    printf("\nHeight fog [I18], per ray (three channels), rays ending on the ground "
+           "(the fog's base):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_transmittancef", c_hf_trf, "printed", base);
+    row("mist_hfog_inscatterf", c_hf_inf, "printed", base);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    row("mist_hfog_evalf", c_hf_evf, "printed", base);
+    row("mist_hfog_layers_evalf (2, 8 pieces)", c_hf_lyf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_transmittance", c_hf_tr, "printed", base);
+    row("mist_hfog_inscatter", c_hf_in, "printed", base);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    row("mist_hfog_eval", c_hf_ev, "printed", base);
+    row("mist_hfog_layers_eval (2, 8 pieces)", c_hf_ly, "printed", base);
+    hfog_deep = 1;
+    hfog_setup();
+    printf("rays going on below the ground, to y = -1500 (fog up to e^12 denser):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    hfog_deep = 0;
+    hfog_setup();
+    base = c_col_printedf;
+    row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
+    row("mist_hfog_columnf", c_colf, "printed", base);
+    row("mist_hfog_column", c_col, "printed", base);
+    base = c_seg_constf;
+    row("constant-coefficient step (float)", c_seg_constf, NULL, NULL);
+    row("mist_segment_linearf", c_segf, "constant", base);
+    row("mist_segment_linear", c_seg, "constant", base);
+}
+
 /* ---- object-code size ---------------------------------------------------- */
 
 /* Sizes of an object file: the whole file, and for ELF64 little-endian (no
@@ -622,6 +966,7 @@ int main(void)
     alternatives();
     hg_target_rows();
     batch_rows();
+    coverage_rows();
     size_rows();
     printf("\nLorenz-Mie (mist_mie.h), one diameter, 1800 angles x 3 wavelengths, "
            "median of 5:\n");

@@ -39,4 +39,37 @@ static inline float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sq
 static inline double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
 #undef EQ6
 
+/* [JD23] eq. 5 (Draine; Cornette-Shanks at alpha = 1), with eq. 2's pow,
+ * and the fog mixture of eq. 2 and 5 (weight w of Draine) */
+static inline float draine_eval_printed(float g, float alpha, float u)
+{
+    return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f)
+           * (1 + alpha * u * u) / (1 + alpha * (1 + 2 * g * g) / 3);
+}
+static inline float fog_eval_printed(float g_hg, float g_d, float alpha, float w, float u)
+{
+    return (1 - w) * hg_eval_printed(g_hg, u) + w * draine_eval_printed(g_d, alpha, u);
+}
+
+/* Rayleigh: 3/(16 pi) (1 + u^2) */
+static inline float rayleigh_eval_printed(float u)
+{
+    return 3.0f / (16.0f * 3.14159265f) * (1 + u * u);
+}
+
+/* [I18] eq. 22-23 as printed, one colour channel: the background b seen
+ * from y0 (above the fog's base) along a ray of vertical component wy over
+ * length s, through extinction bt = sum of beta_t and scattering bs = sum
+ * of beta_s (p L_sun + L_amb), both at the base: b T + bs / bt (1 - T),
+ * T = exp(-H / wy bt e^(-y0/H) (1 - e^(-wy s / H))).  Divides by wy and
+ * bt: NaN for a level ray or no fog, as printed. */
+#define I18(T, EXP)                                                            \
+    T tr = EXP(-H / wy * bt * EXP(-y0 / H) * (1 - EXP(-wy * s / H)));          \
+    return b * tr + bs / bt * (1 - tr);
+static inline float  hfog_printedf(float b, float y0, float wy, float s, float H, float bt,
+                                   float bs) { I18(float, expf) }
+static inline double hfog_printed(double b, double y0, double wy, double s, double H,
+                                  double bt, double bs) { I18(double, exp) }
+#undef I18
+
 #endif
