@@ -11,7 +11,11 @@
  *     (bench/size_one.c) against one using everything (bench/size_all.c),
  *     built by CMake at this benchmark's flags (MIST_BENCH_FLAGS, printed);
  *   - the double samplers as built without a wider long double
- *     (bench/nold.c, MIST_NO_LONG_DOUBLE: MSVC, ARM Macs, CUDA).
+ *     (bench/nold.c, MIST_NO_LONG_DOUBLE: MSVC, ARM Macs, CUDA);
+ *   - every other public evaluation and sampling function (coverage_rows:
+ *     the direction samplers, the height fog, the ray-march step, the
+ *     preparation of a medium), beside the formula as printed or the
+ *     function it builds on.
  * Each figure: median of 15 timed repetitions (after a warm-up) over a
  * stream of 4096 random inputs, with the spread (min..max of the
  * repetitions); a ratio is the median over 15 turns of one repetition of
