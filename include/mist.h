@@ -1335,6 +1335,14 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
 #ifndef MIST__INTERNAL_ONLY
 #ifndef MIST_NO_DRAINE
 #ifdef MIST__W
+/* The half-width of the window a step's u1 is rounded within: its bound
+ * eb twice, and W's rounding of u1 (|u| eps_T / 512 >= 4 ulp of W): ~2^-9
+ * of an ulp of T, so the rounding by the residual is rare. */
+MIST__F MIST__HOT MIST__W MIST__FN(mist__draine_win)(MIST__W uw, MIST__W eb)
+{
+    return 2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512);
+}
+
 /* uw, the wide solution at xi in [0, 1] (within eps_T / 64 (|u| + xi/f) of
  * the root, by the stops of mist__draine_newton and _step), rounded to T
  * monotonically in xi.  Plain rounding is not: where a rounding boundary
@@ -1474,12 +1482,9 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
                     ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
                     (MIST__W)MIST__EPS / 64, &ok, &eb);
-                /* rounded within the step's bound (2x) and W's rounding of
-                 * u1 (|u| eps_T / 512 >= 4 ulp of W): a window ~2^-9 of an
-                 * ulp of T wide, so the extra evaluation is rare */
                 if (ok) return MIST__FN(mist__draine_round)(g, (MIST__W)fin, fin > 0
                     ? (MIST__W)alpha : 1, xi, uw < -1 ? -1 : (uw > 1 ? 1 : uw),
-                    2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512));
+                    MIST__FN(mist__draine_win)(uw, eb));
                 if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
             }
         }
@@ -2213,7 +2218,7 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
                                                   (MIST__W)MIST__EPS / 64, &ok, &e2);
         MIST__W uw = again ? u2 : u1, eb = again ? e2 : e1;
         MIST__T lo, hi;
-        w = 2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512);
+        w = MIST__FN(mist__draine_win)(uw, eb);
         uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);
         lo = (MIST__T)(uw - w); hi = (MIST__T)(uw + w);
         mid = (MIST__W)0.5 * ((MIST__W)lo + (MIST__W)hi);
@@ -2270,7 +2275,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             uw = MIST__WFN(mist__draine_step)(gw, fin, aw, (MIST__W)xi, (MIST__W)st, kb,
                                               (MIST__W)MIST__EPS / 64, &ok, &eb);
             u1[j_] = uw; e1[j_] = eb;
-            w = 2 * eb + (uw < 0 ? -uw : uw) * ((MIST__W)MIST__EPS / 512);
+            w = MIST__FN(mist__draine_win)(uw, eb);
             uw = uw < -1 ? -1 : (uw > 1 ? 1 : uw);   /* as mist__draine_sample */
             lo = (MIST__T)(uw - w); hi = (MIST__T)(uw + w);
             y_[j_] = lo;
