@@ -1135,7 +1135,11 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* allows.  So the iteration in T stops at T's noise and finishes with      */
 /* Newton steps in the wider type (long double for double; float iterates   */
 /* in double from the start), which is correctly rounded in practice (0.25x */
-/* the bar).  Where eq. 6 itself is good in double (1e-3 <= |g| <= 0.9999,  */
+/* the bar) where the bar's ulp term dominates; where its xi term does      */
+/* (near u = 0 at large alpha) the steps stop well inside the bar, not at   */
+/* the rounded root (g 1.6e-8, alpha 3457, xi 0.49999952 in float: ~1000    */
+/* ulps of u from it, 1e-4 of the bar, F(u) - xi = 2.5e-11; measured).      */
+/* Where eq. 6 itself is good in double (1e-3 <= |g| <= 0.9999,             */
 /* 1e-6 <= alpha <= 1e4: within 1.3e-5, measured) it is only the starting   */
 /* point: one wide Newton step then lands (checked by the step's predicted  */
 /* successor), and the iteration in T is skipped.  The stop is judged with  */
@@ -1498,7 +1502,9 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
 
-/* Draine: u with P(cos <= u) = xi, exact to a few ulp.
+/* Draine: u with P(cos <= u) = xi, within the accuracy bar (a few ulps of
+ * u, or where u is ill-conditioned in xi, near u = 0 at large alpha, 4 eps
+ * xi du/dxi: see the section comment).
  * Domain: g in [-1, 1], alpha in [0, +inf], xi in [0, 1]. */
 MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T xi)
 {
