@@ -1090,6 +1090,7 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
     mi_fail("mist_phase_%s(g=%a, alpha=%a, fog {%a, %a, %a, %a}) at %a: %a, unprepared %a: %s", \
             name[kind], (double)g, (double)a, MI_FOGARGS(raw), (double)(x), (double)(r), \
             (double)(ref), what)
+    mi_w tols[80] = { 0 };   /* each sample's tolerance against the unprepared one */
     for (i = 0; i < n; ++i) {
         MI_T e = MI_CALL(MI_L(mist_phase_eval)(p, u[i])), re, s, rs, pdf = -1, d;
         MI_V3 o, on;
@@ -1146,6 +1147,7 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
             }
             tol = MI_PH_TOL_S * fabsl((mi_w)rs) + 2 * MI_EPS
                 + (pl > 0 ? 16 * MI_EPS / (2 * 3.14159265358979323846L * pl) : (mi_w)MI_INF);
+            if (i < 80) tols[i] = tol;
             if (MI_ISNAN(s) || !(s >= -1 && s <= 1) || !(fabsl((mi_w)s - rs) <= tol))
                 MI_PFAIL("sample: not the unprepared sample", xi[i], s, rs);
         }
@@ -1155,7 +1157,14 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
         MI_F(mi_check_sdir)("mist_phase_sample_dir", wi, xi2, s, d, o, pdf, on);
     }
     {   /* the prepared batch forms: the scalar prepared functions, element by
-         * element (MI_BATCH_SAME), and in place */
+         * element (MI_BATCH_SAME), and in place.  Where the compiler may
+         * contract (MI_CONTRACT) the float Draine batch's second Newton step
+         * and rounding (a vectorised copy) may stop elsewhere inside the
+         * bar than the scalar one, by many ulps where u is ill-conditioned
+         * in xi (near u = 0 at large alpha: include/mist.h, BATCH FORMS;
+         * gcc -O3 -march=native -ffp-contract=fast, 22 of 1e9 calls): there
+         * the batch sample need only be within twice the tolerance each
+         * prepared sample keeps to the unprepared one (tols, above). */
         MI_T be[80], bs[80], bi[80] = { 0 };
         int m = n < 80 ? n : 80;
         MI_CALL(MI_L(mist_phase_eval_n)(p, u, be, (size_t)m));
@@ -1167,7 +1176,9 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
             MI_T s = MI_CALL(MI_L(mist_phase_sample)(p, xi[i]));
             if (!MI_BATCH_SAME(be[i], e))
                 MI_PFAIL("mist_phase_eval_n: not the scalar result", u[i], be[i], e);
-            if (!MI_BATCH_SAME(bs[i], s) || !MI_BATCH_SAME(bi[i], s))
+            int near_s = MI_CONTRACT && i < n && fabsl((mi_w)bs[i] - s) <= 2 * tols[i]
+                         && fabsl((mi_w)bi[i] - s) <= 2 * tols[i];
+            if (!near_s && (!MI_BATCH_SAME(bs[i], s) || !MI_BATCH_SAME(bi[i], s)))
                 MI_PFAIL("mist_phase_sample_n: not the scalar result", xi[i], bs[i], s);
         }
     }
