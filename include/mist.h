@@ -315,6 +315,7 @@
 #include <float.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 /* The fast-math guard (see FAST MATH above): pushed here, popped at the
  * end of the file (the section "The fast-math guard" at the top). */
@@ -2458,37 +2459,43 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
  * NaN, k out of range, long double) the library's. */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
 {
-    union { MIST__T t; uint64_t d; uint32_t f; } v;
-    v.d = 0;
-    v.t = x;
-    if (sizeof(MIST__T) == sizeof(uint64_t)) {
-        int k = (int)(v.d >> 52 & 0x7ff);
+    uint64_t d = 0;         /* the bits by memcpy: defined in C and C++ alike */
+    uint32_t f = 0;
+    if (sizeof(MIST__T) == sizeof d) {
+        int k;
+        memcpy(&d, &x, sizeof(MIST__T));
+        k = (int)(d >> 52 & 0x7ff);
         if (k != 0 && k != 0x7ff) {
             *e = k - 1022;
-            v.d = (v.d & ~((uint64_t)0x7ff << 52)) | (uint64_t)0x3fe << 52;
-            return v.t;
+            d = (d & ~((uint64_t)0x7ff << 52)) | (uint64_t)0x3fe << 52;
+            memcpy(&x, &d, sizeof(MIST__T));
+            return x;
         }
-    } else if (sizeof(MIST__T) == sizeof(uint32_t)) {
-        int k = (int)(v.f >> 23 & 0xff);
+    } else if (sizeof(MIST__T) == sizeof f) {
+        int k;
+        memcpy(&f, &x, sizeof(MIST__T));
+        k = (int)(f >> 23 & 0xff);
         if (k != 0 && k != 0xff) {
             *e = k - 126;
-            v.f = (v.f & ~((uint32_t)0xff << 23)) | (uint32_t)0x7e << 23;
-            return v.t;
+            f = (f & ~((uint32_t)0xff << 23)) | (uint32_t)0x7e << 23;
+            memcpy(&x, &f, sizeof(MIST__T));
+            return x;
         }
     }
     return MIST__M(frexp)(x, e);
 }
 MIST__F MIST__HOT MIST__T MIST__FN(mist__ldexp)(MIST__T x, int k)
 {
-    union { MIST__T t; uint64_t d; uint32_t f; } p;
-    p.d = 0;
+    MIST__T p;
     if (sizeof(MIST__T) == sizeof(uint64_t) && k >= -1022 && k <= 1023) {
-        p.d = (uint64_t)(k + 1023) << 52;
-        return x * p.t;
+        uint64_t d = (uint64_t)(k + 1023) << 52;
+        memcpy(&p, &d, sizeof(MIST__T));
+        return x * p;
     }
     if (sizeof(MIST__T) == sizeof(uint32_t) && k >= -126 && k <= 127) {
-        p.f = (uint32_t)(k + 127) << 23;
-        return x * p.t;
+        uint32_t f = (uint32_t)(k + 127) << 23;
+        memcpy(&p, &f, sizeof(MIST__T));
+        return x * p;
     }
     return MIST__M(ldexp)(x, k);
 }
