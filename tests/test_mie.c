@@ -10,7 +10,8 @@
  *   - size-distribution averages against an independent trapezoid rule and
  *     closed-form moments; wavelength averages; water's index table;
  *   - bad input gets the documented result;
- *   - speed: 1800 angles x 3 wavelengths for one droplet of 10 and 50 um.
+ *   - the benchmark's workload (1800 angles x 3 wavelengths, one droplet of
+ *     10 and 50 um) gives a valid average; its speed is the benchmark's.
  * Set MIST_VERBOSE=1 in the environment to print the worst deviations. */
 #include "mist_mie.h"
 #include "mist_test.h"
@@ -1379,28 +1380,26 @@ static void test_sweep(void)
 /* (x ~ 57 at 550 nm) and d = 50 um (x ~ 285).  Must be well under 1 s.     */
 /* ======================================================================== */
 
-static void test_speed(void)
+/* The benchmark's workload (bench/mist_bench.c, "Lorenz-Mie": one diameter,
+ * 1800 angles x 3 wavelengths of water) runs and gives a valid average:
+ * its speed is the benchmark's to measure (issue 3: "measure it in the
+ * benchmarks"), not this test's; a time bound here was removed. */
+static void test_bench_workload(void)
 {
     static const double dia[2] = {10, 50};
     double mu[1800], p[1800];
     mist_mie_wavelength wl[3];
-    int i, rep, reps = 5;
+    int i;
     wl[0] = mist_mie_wl(0.45, 1, mist_mie_water(450, NULL));
     wl[1] = mist_mie_wl(0.55, 1, mist_mie_water(550, NULL));
     wl[2] = mist_mie_wl(0.65, 1, mist_mie_water(650, NULL));
     mist_mie_theta_grid(1800, mu);
     for (i = 0; i < 2; ++i) {
         mist_mie_dist d = mist_mie_dist_mono(dia[i] / 2);
-        mist_mie_avg a;
-        clock_t t0 = clock();
-        double t;
-        for (rep = 0; rep < reps; ++rep) a = mist_mie_average(&d, wl, 3, 1.0, mu, 1800, p);
-        t = (double)(clock() - t0) / CLOCKS_PER_SEC / reps;
-        mt_check(a.status == MIST_MIE_OK && t < 0.25,
-                 "speed d = %g um: %.4f s for 1800 angles x 3 wavelengths", dia[i], t);
-        if (verbose)
-            printf("speed: d = %g um, 1800 angles x 3 wavelengths: %.2f ms (g %.5f)\n",
-                   dia[i], 1e3 * t, a.g);
+        mist_mie_avg a = mist_mie_average(&d, wl, 3, 1.0, mu, 1800, p);
+        mt_check(a.status == MIST_MIE_OK && a.g > 0.8 && a.g < 0.9 && p[0] > 0 && p[0] == p[0],
+                 "d = %g um, 1800 angles x 3 wavelengths: status %d, g %g", dia[i],
+                 (int)a.status, a.g);
     }
 }
 
@@ -1421,7 +1420,7 @@ int main(void)
     test_water();
     test_bad_input();
     test_sweep();
-    test_speed();
+    test_bench_workload();
     if (verbose) printf("total: %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     return mt_done("test_mie");
 }
