@@ -2456,29 +2456,30 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
  * transition penalty).  The same results as the library's: frexp of a
  * normal number only moves its exponent; x 2^k with 2^k normal is one
  * correctly rounded product, as ldexp is.  Elsewhere (0, subnormals, inf,
- * NaN, k out of range, long double) the library's. */
+ * NaN, k out of range, another format) the library's. */
+#if defined(MIST__W_EXACT)
+/* float: through double, where every float is exact and normal (subnormal
+ * floats too) and x 2^k rounds once, to float */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
+{
+    return (MIST__T)MIST__WFN(mist__frexp)((MIST__W)x, e);
+}
+MIST__F MIST__HOT MIST__T MIST__FN(mist__ldexp)(MIST__T x, int k)
+{
+    return (MIST__T)MIST__WFN(mist__ldexp)((MIST__W)x, k);
+}
+#else
 MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
 {
     uint64_t d = 0;         /* the bits by memcpy: defined in C and C++ alike */
-    uint32_t f = 0;
     if (sizeof(MIST__T) == sizeof d) {
         int k;
-        memcpy(&d, &x, sizeof(MIST__T));
+        memcpy(&d, &x, sizeof d);
         k = (int)(d >> 52 & 0x7ff);
         if (k != 0 && k != 0x7ff) {
             *e = k - 1022;
             d = (d & ~((uint64_t)0x7ff << 52)) | (uint64_t)0x3fe << 52;
-            memcpy(&x, &d, sizeof(MIST__T));
-            return x;
-        }
-    } else if (sizeof(MIST__T) == sizeof f) {
-        int k;
-        memcpy(&f, &x, sizeof(MIST__T));
-        k = (int)(f >> 23 & 0xff);
-        if (k != 0 && k != 0xff) {
-            *e = k - 126;
-            f = (f & ~((uint32_t)0xff << 23)) | (uint32_t)0x7e << 23;
-            memcpy(&x, &f, sizeof(MIST__T));
+            memcpy(&x, &d, sizeof d);
             return x;
         }
     }
@@ -2486,19 +2487,15 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
 }
 MIST__F MIST__HOT MIST__T MIST__FN(mist__ldexp)(MIST__T x, int k)
 {
-    MIST__T p;
     if (sizeof(MIST__T) == sizeof(uint64_t) && k >= -1022 && k <= 1023) {
         uint64_t d = (uint64_t)(k + 1023) << 52;
-        memcpy(&p, &d, sizeof(MIST__T));
-        return x * p;
-    }
-    if (sizeof(MIST__T) == sizeof(uint32_t) && k >= -126 && k <= 127) {
-        uint32_t f = (uint32_t)(k + 127) << 23;
-        memcpy(&p, &f, sizeof(MIST__T));
+        MIST__T p;
+        memcpy(&p, &d, sizeof d);
         return x * p;
     }
     return MIST__M(ldexp)(x, k);
 }
+#endif
 
 /* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
 MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
