@@ -1443,12 +1443,15 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
 /* The prepared start at xi in [0, 1]: the table's cubic Hermite
  * interpolant in interval *j (tab: u at xi = j/K, then the slopes
  * du/dxi / K). */
+MIST__F MIST__HOT int MIST__FN(mist__phase_k)(MIST__T xi)     /* xi's table interval */
+{
+    int k = (int)(xi * MIST__PHASE_K);
+    return k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
+}
 MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__T xi, int *j)
 {
-    MIST__T t = xi * MIST__PHASE_K, d, m0, m1;
-    int k = (int)t;
-    k = k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
-    t -= (MIST__T)k;
+    int k = MIST__FN(mist__phase_k)(xi);
+    MIST__T t = xi * MIST__PHASE_K - (MIST__T)k, d, m0, m1;
     d = tab[k + 1] - tab[k];
     m0 = tab[MIST__PHASE_K + 1 + k]; m1 = tab[MIST__PHASE_K + 2 + k];
     *j = k;
@@ -2205,8 +2208,8 @@ typedef struct {
  * bound and u1 lies in the table interval), then mist__draine_round (the
  * residual's sign where the bound straddles two values of T).  A
  * straight-line pass over MIST__BLK lanes of local copies, the unused ones
- * repeating lane 0, so that it vectorises; then the scalar sampler for the rare element
- * whose second step did not meet its bound either. */
+ * repeating lane 0, so that it vectorises; then the scalar sampler for the
+ * rare element whose second step did not meet its bound either. */
 MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W gw, MIST__W fin,
                                           MIST__W aw, MIST__FN(mist__pend) *q, MIST__T *out)
 {
@@ -2248,11 +2251,11 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
  * another straight-line pass (mist__phase_finish); only what falls out of
  * both (no table interval, no converged step) takes the scalar function.
  * Before the pending pass those elements took the scalar function, ~86 ns
- * each: 38% of the batch's time.  Measured (gcc 12 -O3 -march=native
- * -fno-math-errno, AVX-512, n = 4096, g .5, alpha 17, a one-off harness
- * beside the scalar loop): 10.0 -> 8.1-8.8 ns a sample, 3.0x -> 3.5-3.9x
- * the scalar loop; at g .1, alpha 250 a third of the pending elements
- * still need the scalar function (their second step misses too). */
+ * each: 38% of the batch's time.  ./build/mist_bench (gcc 12 -O3
+ * -march=native -fno-math-errno, AVX-512, n = 4096, g .5, alpha 17, three
+ * runs): 7.6-11.5 ns a sample, 3.3-3.7x the scalar loop (2.6-2.9x before);
+ * at g .1, alpha 250 a third of the pending elements still need the scalar
+ * function (their second step misses too). */
 MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
                                            MIST__T *out, size_t n)
 {
@@ -2291,8 +2294,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             1,
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);   /* as above */
             MIST__W uw = u1[j_];
-            int k = (int)(xi * MIST__PHASE_K);
-            k = k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
+            int k = MIST__FN(mist__phase_k)(xi);
             if (f_[j_] == 2 && !(uw >= tab[k] && uw <= tab[k + 1])) {
                 out[i_ + j_] = MIST__FN(mist_phase_sample)(p, x_[j_]);   /* no second step */
             } else {
