@@ -655,22 +655,10 @@ static void hfog_setup(void)
               + F.ambient.g) + F.mie_scat.g * (pm * F.sun.g + F.ambient.g));           \
     T b_ = FN(1, y0, D.y, S, H, F.rayleigh_ext.b + F.mie_ext.b, F.rayleigh_scat.b * (pr * F.sun.b \
               + F.ambient.b) + F.mie_scat.b * (pm * F.sun.b + F.ambient.b));
-static double c_hf_printedf(void)
-{
-    float s_ = 0;
-    int i;
-    for (i = 0; i < N; ++i) { PRINTED_RAY(float, hfog_printedf, hff[0], ray_of[i], ray_df[i],
-                                          ray_sf[i]) s_ += r_ + g_ + b_; }
-    return s_;
-}
-static double c_hf_printed(void)
-{
-    double s_ = 0;
-    int i;
-    for (i = 0; i < N; ++i) { PRINTED_RAY(double, hfog_printed, hfd[0], ray_od[i], ray_dd[i],
-                                          ray_sd[i]) s_ += r_ + g_ + b_; }
-    return s_;
-}
+#define PRINTED_LOOP(T, FN, F, O, D, S) { T s_ = 0; int i; for (i = 0; i < N; ++i) { \
+    PRINTED_RAY(T, FN, F, O[i], D[i], S[i]) s_ += r_ + g_ + b_; } return s_; }
+static double c_hf_printedf(void) PRINTED_LOOP(float, hfog_printedf, hff[0], ray_of, ray_df, ray_sf)
+static double c_hf_printed(void)  PRINTED_LOOP(double, hfog_printed, hfd[0], ray_od, ray_dd, ray_sd)
 #define RGBLOOP(T, RGB, CALL) { T s_ = 0; int i; for (i = 0; i < N; ++i) { RGB c_ = CALL; \
     s_ += c_.r + c_.g + c_.b; } return s_; }
 static double c_hf_trf(void) RGBLOOP(float, mist_rgbf,
