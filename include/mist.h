@@ -1687,6 +1687,10 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         p.f0[2 * i + 1] = MIST__C(0);
 #endif
     }
+    if (p.kind == 0 && p.w <= MIST__C(0)) {     /* HG: no Draine lobe, the table unused */
+        for (i = 0; i < 3 * MIST__PHASE_K + 2; ++i) p.tab[i] = MIST__C(0);
+        return p;                   /* (filling it cost 0.3 us, measured) */
+    }
     /* the start table: the exact u at xi = j/K and the slopes du/dxi / K =
      * 2 cn V^3 / ((1-g^2)(c0 + c1 u^2) K), limited to 3x the neighbouring
      * secants (finite where the density is 0, and a monotone interpolant) */
