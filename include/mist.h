@@ -314,8 +314,6 @@
 #include <math.h>
 #include <float.h>
 #include <stddef.h>
-#include <stdint.h>
-#include <string.h>
 
 /* The fast-math guard (see FAST MATH above): pushed here, popped at the
  * end of the file (the section "The fast-math guard" at the top). */
@@ -1570,9 +1568,10 @@ MIST__F MIST__FOG MIST__FN(mist_fog_make)(MIST__T g_hg, MIST__T g_d, MIST__T alp
  * height fog: gcc 12 -O3 -march=native copied the 32-byte double struct
  * for a by-value call through a ymm register and then called on without
  * vzeroupper, which left the SSE/AVX transition penalty on every later
- * call into glibc's exp wrapper (legacy SSE): mist_hfog_inscatter took
- * ~4 us a ray in the benchmark instead of ~0.65 (perf: the time on the
- * wrapper's first instruction). */
+ * call into glibc's legacy-SSE code (frexp, ldexp, the exp wrapper: ~80
+ * a ray): mist_hfog_inscatter took 15-20 us a ray in the benchmark
+ * instead of ~0.65 (perf: the time on those functions' first SSE
+ * instruction). */
 MIST__F MIST__T MIST__FN(mist__fog_eval)(const MIST__FOG *fog, MIST__T u)
 {
     MIST__T w = MIST__FN(mist__clamp)(fog->w_d, MIST__C(0), MIST__C(1));
@@ -2452,56 +2451,6 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
 #define MIST__XLIM  MIST__C(MIST__EPS < 1e-10 ? 700 : 85)
 
-/* frexp and ldexp without the library call in the normal range.  The
- * height fog makes ~80 of these a ray, and glibc's are calls into code
- * without the AVX encoding: measured, a third of mist_hfog_inscatter's
- * time in a plain -O3 -march=native program, and in a process where the
- * upper halves of the vector registers had been left in use (the
- * benchmark) ~200 ns a call, 15-20 us a ray instead of ~0.65 (perf: the
- * time on the first SSE instruction of __frexp, the mark of the SSE/AVX
- * transition penalty).  The same results as the library's: frexp of a
- * normal number only moves its exponent; x 2^k with 2^k normal is one
- * correctly rounded product, as ldexp is.  Elsewhere (0, subnormals, inf,
- * NaN, k out of range, another format) the library's. */
-#if defined(MIST__W_EXACT)
-/* float: through double, where every float is exact and normal (subnormal
- * floats too) and x 2^k rounds once, to float */
-MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
-{
-    return (MIST__T)MIST__WFN(mist__frexp)((MIST__W)x, e);
-}
-MIST__F MIST__HOT MIST__T MIST__FN(mist__ldexp)(MIST__T x, int k)
-{
-    return (MIST__T)MIST__WFN(mist__ldexp)((MIST__W)x, k);
-}
-#else
-MIST__F MIST__HOT MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
-{
-    uint64_t d = 0;         /* the bits by memcpy: defined in C and C++ alike */
-    if (sizeof(MIST__T) == sizeof d) {
-        int k;
-        memcpy(&d, &x, sizeof d);
-        k = (int)(d >> 52 & 0x7ff);
-        if (k != 0 && k != 0x7ff) {
-            *e = k - 1022;
-            d = (d & ~((uint64_t)0x7ff << 52)) | (uint64_t)0x3fe << 52;
-            memcpy(&x, &d, sizeof d);
-            return x;
-        }
-    }
-    return MIST__M(frexp)(x, e);
-}
-MIST__F MIST__HOT MIST__T MIST__FN(mist__ldexp)(MIST__T x, int k)
-{
-    if (sizeof(MIST__T) == sizeof(uint64_t) && k >= -1022 && k <= 1023) {
-        uint64_t d = (uint64_t)(k + 1023) << 52;
-        MIST__T p;
-        memcpy(&p, &d, sizeof d);
-        return x * p;
-    }
-    return MIST__M(ldexp)(x, k);
-}
-#endif
 
 /* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
 MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
@@ -2560,9 +2509,9 @@ MIST__F MIST__T MIST__FN(mist__expmul_s)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
     c3 = c3 < MIST__BIG ? c3 : MIST__BIG; c4 = c4 < MIST__BIG ? c4 : MIST__BIG;
     d = d < MIST__BIG ? d : MIST__BIG;
     if (!(xl < MIST__C(1e-3) && xl > MIST__C(-1e-3))) xl = MIST__C(0);
-    p = MIST__FN(mist__frexp)(c1, &k1) * MIST__FN(mist__frexp)(c2, &k2);
-    p = p * MIST__FN(mist__frexp)(c3, &k3) * MIST__FN(mist__frexp)(c4, &k4);
-    p = p / MIST__FN(mist__frexp)(d, &k5);                 /* in [1/32, 2) */
+    p = MIST__M(frexp)(c1, &k1) * MIST__M(frexp)(c2, &k2);
+    p = p * MIST__M(frexp)(c3, &k3) * MIST__M(frexp)(c4, &k4);
+    p = p / MIST__M(frexp)(d, &k5);                 /* in [1/32, 2) */
     k = k1 + k2 + k3 + k4 - k5 + k0;
     /* e^-xh against 2^k: beyond these the result is 0 or +inf */
     x = xh - (MIST__T)k * MIST__C(0.693147180559945309);
@@ -2570,11 +2519,11 @@ MIST__F MIST__T MIST__FN(mist__expmul_s)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
     if (x < MIST__C(-64) * MIST__XLIM) return (MIST__T)INFINITY;
     for (n = 1; !(xh / (MIST__T)n < MIST__XLIM && xh / (MIST__T)n > -MIST__XLIM); n *= 2) {}
     e = MIST__M(exp)(-xh / (MIST__T)n);
-    r = MIST__FN(mist__frexp)(p * (MIST__C(1) - xl), &i);
+    r = MIST__M(frexp)(p * (MIST__C(1) - xl), &i);
     k += i;
     for (i = 0; i < n; ++i) {
         int j;
-        r = MIST__FN(mist__frexp)(r * e, &j);
+        r = MIST__M(frexp)(r * e, &j);
         k += j;
     }
     *ko = k;
@@ -2600,7 +2549,7 @@ MIST__F MIST__T MIST__FN(mist__expmul_k)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
         }
     }
     r = MIST__FN(mist__expmul_s)(c1, c2, c3, c4, d, xh, xl, k0, &k);
-    return MIST__FN(mist__ldexp)(r, k);
+    return MIST__M(ldexp)(r, k);
 }
 
 MIST__F MIST__T MIST__FN(mist__expmul)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
@@ -2648,7 +2597,7 @@ MIST__F MIST__T MIST__FN(mist__expmul_f)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
 {
     const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
     MIST__T r = MIST__FN(mist__expmul)(c1, c2, c3, c4, d, xh, xl);
-    if (r >= tmin && r <= MIST__BIG) return MIST__FN(mist__frexp)(r, k);
+    if (r >= tmin && r <= MIST__BIG) return MIST__M(frexp)(r, k);
     return MIST__FN(mist__expmul_s)(c1, c2, c3, c4, d, xh, xl, 0, k);
 }
 
@@ -2699,7 +2648,7 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
     }
     r.r0m = MIST__FN(mist__expmul_f)(d0, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(1), hh, hl,
                                      &r.r0e);
-    r.rho0 = MIST__FN(mist__ldexp)(r.r0m, r.r0e);
+    r.rho0 = MIST__M(ldexp)(r.r0m, r.r0e);
     if (!(s <= MIST__BIG)) {                     /* s = +inf */
         if (w > MIST__C(0) && H <= MIST__BIG) {  /* the column above: H / w */
             r.cm = MIST__FN(mist__expmul_f)(d0, H, MIST__C(1), MIST__C(1), w, hh, hl, &r.ce);
@@ -2709,8 +2658,8 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
             if (w < MIST__C(0) && H <= MIST__BIG) { r.r1m = (MIST__T)INFINITY; r.r1e = 0; }
             else { r.r1m = r.r0m; r.r1e = r.r0e; }
         }
-        r.col = MIST__FN(mist__ldexp)(r.cm, r.ce);
-        r.rho1 = MIST__FN(mist__ldexp)(r.r1m, r.r1e);
+        r.col = MIST__M(ldexp)(r.cm, r.ce);
+        r.rho1 = MIST__M(ldexp)(r.r1m, r.r1e);
         return r;
     }
     za = ah < MIST__C(0) ? -ah : ah;
@@ -2727,8 +2676,8 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
     else
         r.cm = MIST__FN(mist__expmul_f)(d0, H, -MIST__M(expm1)(-za), MIST__C(1), aw, xh, xl,
                                         &r.ce);
-    r.col = MIST__FN(mist__ldexp)(r.cm, r.ce);
-    r.rho1 = MIST__FN(mist__ldexp)(r.r1m, r.r1e);
+    r.col = MIST__M(ldexp)(r.cm, r.ce);
+    r.rho1 = MIST__M(ldexp)(r.r1m, r.r1e);
     return r;
 }
 
@@ -3106,7 +3055,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     else wk[k] = (MIST__T)INFINITY;
                     if (!(wk[k] <= MIST__BIG)) unb = 1;
                     else if (wk[k] > MIST__C(0)) {
-                        dtau += MIST__FN(mist__ldexp)(wk[k], ke[k]);
+                        dtau += MIST__M(ldexp)(wk[k], ke[k]);
                         if (!have || ke[k] > emax) emax = ke[k];
                         have = 1;
                     }
@@ -3151,7 +3100,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         if (k == ref || lk[k] > lmax) lmax = lk[k];
                     } else {
                         wm[k] = wk[k];
-                        wk[k] = MIST__FN(mist__ldexp)(wk[k], ke[k] - emax);
+                        wk[k] = MIST__M(ldexp)(wk[k], ke[k] - emax);
                     }
                 }
                 for (k = 0; k < n; ++k) {

@@ -1107,49 +1107,6 @@ static int want(int argc, char **argv, const char *name)
     return 0;
 }
 
-/* The height fog's own frexp and ldexp (mist__frexp, mist__ldexp: bit
- * manipulation in the normal range, the library elsewhere) give the
- * library's results bit for bit: every exponent (each power of two, its
- * neighbours, random significands), 0, subnormals, inf and NaN, and ldexp
- * by every k within 64 of the exponent range and beyond (results normal,
- * subnormal, 0, inf).
- * A negative control: a frexp off by one in the exponent is seen. */
-#define FREXP_CASE(T, FR, LD, FRL, LDL, NEXT, MAXE, MINE)                        \
-    {                                                                           \
-        mt_rng r = { 77 };                                                      \
-        int e, k, bad = 0, n = 0;                                               \
-        for (e = MINE - 30; e <= MAXE + 1; ++e)                                 \
-            for (k = 0; k < 8; ++k) {                                           \
-                T x = (T)LDL((T)(1 + mt_uniform(&r)), e), y, z;                 \
-                int ea = 0, eb = 0, sh;                                         \
-                if (k == 1) x = (T)LDL((T)1, e);                                \
-                if (k == 2) x = NEXT(x, (T)0);                                  \
-                if (k == 3) x = -x;                                             \
-                if (k == 4 && e == MINE) x = 0;                              \
-                if (k == 5 && e == MINE) x = (T)INFINITY;                       \
-                if (k == 6 && e == MINE) x = (T)NAN;                            \
-                y = FR(x, &ea); z = FRL(x, &eb);                                \
-                ++n;                                                            \
-                if (!(memcmp(&y, &z, sizeof y) == 0 && (ea == eb || x != x || x == 0 \
-                      || x == (T)INFINITY))) bad++;                            \
-                for (sh = -(MAXE) - 64; sh <= (MAXE) + 64; sh += k == 0 ? 1 : 13) { \
-                    T a = LD(x, sh), b = LDL(x, sh);                           \
-                    ++n;                                                        \
-                    if (memcmp(&a, &b, sizeof a) != 0 && !(a != a && b != b)) bad++; \
-                }                                                               \
-            }                                                                   \
-        mt_check(bad == 0, #FR " and " #LD ": %d of %d differ from the library's", bad, n); \
-        e = 0;                                                                  \
-        { T y = FR((T)3, &e); int e2 = 0; T z = FRL((T)3, &e2);                \
-          mt_check(!(y == z && e + 1 == e2), "control: an exponent off by one is seen"); } \
-    }
-static void test_frexp(void)
-{
-    FREXP_CASE(double, mist__frexp, mist__ldexp, frexp, ldexp, nextafter, DBL_MAX_EXP, DBL_MIN_EXP)
-    FREXP_CASE(float, mist__frexpf, mist__ldexpf, frexpf, ldexpf, nextafterf, FLT_MAX_EXP,
-               FLT_MIN_EXP)
-}
-
 int main(int argc, char **argv)
 {
     gl_init();
@@ -1159,6 +1116,5 @@ int main(int argc, char **argv)
     if (want(argc, argv, "layers")) test_layers();
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); }
     if (want(argc, argv, "bad")) test_bad();
-    if (want(argc, argv, "frexp")) test_frexp();
     return mt_done("test_height_fog");
 }
