@@ -92,20 +92,26 @@ static int same_##T(T a, T b)                                                   
     for (i = 0; i < FMA_ULPS; ++i) { lo = NEXT(lo, -(T)INFINITY); hi = NEXT(hi, (T)INFINITY); } \
     return a >= lo && a <= hi && (a < 0) == (b < 0);                             \
 }                                                                                \
+/* the Draine samplers' accuracy bar at a sample b of xi (x clamped):     */    \
+/* 4 ulp(b) + 4 eps xi du/dxi, eps = ulp(1)/2 (tests/test_accuracy.c)      */    \
+static double bar_##T(T g, T al, T x, T b)                                       \
+{                                                                                \
+    double xi = x > 0 ? (x < 1 ? (double)x : 1.0) : 0.0;                        \
+    double du = 1 / (2 * 3.14159265358979323846 * mist_draine_eval(g, al, b));  \
+    T ab = b < 0 ? -b : b;                                                       \
+    return 4 * (double)(NEXT(ab, (T)INFINITY) - ab)                              \
+           + 2 * (double)(NEXT((T)1, (T)2) - 1) * xi * du;                       \
+}                                                                                \
 /* same_T, or for the double HG samplers within HG_ABS (see there), or    */    \
 /* for the Draine samplers, where the compiler may contract, within twice  */    \
 /* their bar (DR_BAR) of each other                                         */    \
 static int close_##T(int k, T g, T al, T x, T a, T b)                            \
 {                                                                                \
-    double xi = x > 0 ? (x < 1 ? (double)x : 1.0) : 0.0, du;                    \
-    T ab = b < 0 ? -b : b;                                                       \
     if (same_##T(a, b)) return 1;                                                \
     if (sizeof(T) == sizeof(double) && HG_ABS > 0 && (k == HG_SAMPLE || k == PH_SAMPLE)) \
         return (double)a - (double)b <= HG_ABS && (double)b - (double)a <= HG_ABS; \
     if (!DR_BAR || !(k == DR_SAMPLE || k == PD_SAMPLE) || x != x) return 0;       \
-    du = 1 / (2 * 3.14159265358979323846 * mist_draine_eval(g, al, b));          \
-    return fabs((double)a - (double)b) <= 2 * (4 * (double)(NEXT(ab, (T)INFINITY) - ab) \
-                                               + 2 * (double)(NEXT((T)1, (T)2) - 1) * xi * du); \
+    return fabs((double)a - (double)b) <= 2 * bar_##T(g, al, x, b);              \
 }                                                                                 \
                                                                                   \
 /* the prepared phase function of kind k at (g, a), kept while they stay  */   \
@@ -232,15 +238,14 @@ int main(void)
     mt_check(!close_double(HG_SAMPLE, 0.3, 0, 0.5, 0.5, 0.5 + 2 * HG_ABS + 8 * DBL_EPSILON),
              "control: the HG samplers' absolute tolerance must see twice itself");
     /* the Draine samplers' tolerance where it applies (twice the bar) must
-     * see three times the bar, at u near 0 (alpha 1e4, xi 1/2: a bar of
-     * many ulps) and at u = -0.5 */
+     * see three times the bar, near u = 0 (alpha 1e4, xi 1/2: a bar of many
+     * ulps) and away from it (xi 0.2) */
     {
         static const float xs[] = { 0.5f, 0.2f };
         size_t i;
         for (i = 0; i < sizeof xs / sizeof xs[0]; ++i) {
             float g = 1e-6f, al = 1e4f, b = mist_draine_samplef(g, al, xs[i]);
-            double du = 1 / (2 * 3.14159265358979323846 * mist_draine_eval(g, al, b));
-            double bar = 4 * (nextafterf(fabsf(b), 1) - fabsf(b)) + 4 * FLT_EPSILON / 2 * xs[i] * du;
+            double bar = bar_float(g, al, xs[i], b);
             float a = (float)(b + 3 * bar);
             mt_check(!close_float(DR_SAMPLE, g, al, xs[i], a, b) && close_float(DR_SAMPLE, g, al, xs[i], b, b),
                      "control: xi %g, u %g: the Draine tolerance must see 3x the bar (%g)",
