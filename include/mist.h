@@ -2253,7 +2253,7 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
  * Before the pending pass those elements took the scalar function, ~86 ns
  * each: 38% of the batch's time.  ./build/mist_bench (gcc 12 -O3
  * -march=native -fno-math-errno, AVX-512, n = 4096, g .5, alpha 17, three
- * runs): 7.6-11.5 ns a sample, 3.3-3.7x the scalar loop (2.6-2.9x before);
+ * runs): 7.9-8.1 ns a sample, 3.9x the scalar loop (2.6-2.9x before);
  * at g .1, alpha 250 a third of the pending elements still need the scalar
  * function (their second step misses too). */
 MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
