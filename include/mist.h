@@ -50,7 +50,10 @@
  *   fma is one instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or
  *   later, CUDA device code): there they finish in double-double, correctly
  *   rounded in practice and monotone, with or without long double, and
- *   their batch forms vectorise.  Float is the same everywhere.
+ *   their batch forms vectorise.  Float is the same everywhere.  Run in CUDA
+ *   device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90; tests/gpu/): every
+ *   sampler within those bars, float samples bit for bit the host's, bad
+ *   input answered as on the host (README "On a GPU").
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.

@@ -6,8 +6,15 @@
 
 #include <math.h>
 
+/* callable from CUDA kernels too (tests/gpu/mist_gpu.cu) */
+#ifdef __CUDACC__
+#  define MP_FN static inline __host__ __device__
+#else
+#  define MP_FN static inline
+#endif
+
 /* [JD23] eq. 2 */
-static inline float hg_eval_printed(float g, float u)
+MP_FN float hg_eval_printed(float g, float u)
 {
     return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f);
 }
@@ -18,8 +25,8 @@ static inline float hg_eval_printed(float g, float u)
     if (g < (T)1e-3 && g > -(T)1e-3) return 2 * xi - 1;                        \
     t = (1 - g * g) / (1 - g + 2 * g * xi);                                    \
     return (1 + g * g - t * t) / (2 * g);
-static inline float  hg_sample_printed(float g, float xi)    { EQ3(float) }
-static inline double hg_sample_printed_d(double g, double xi) { EQ3(double) }
+MP_FN float  hg_sample_printed(float g, float xi)    { EQ3(float) }
+MP_FN double hg_sample_printed_d(double g, double xi) { EQ3(double) }
 
 /* [JD23] eq. 6, typed in as printed */
 #define EQ6(T, SQRT, CBRT)                                                     \
@@ -35,24 +42,24 @@ static inline double hg_sample_printed_d(double g, double xi) { EQ3(double) }
     T t9 = SQRT(6 * (1 + g * g) + t8);                                         \
     T w = SQRT(6 * (1 + g * g) - t8 + 8 * t4 / (t0 * t9)) - t9;                \
     return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
-static inline float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrtf) }
-static inline double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
+MP_FN float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrtf) }
+MP_FN double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
 #undef EQ6
 
 /* [JD23] eq. 5 (Draine; Cornette-Shanks at alpha = 1), with eq. 2's pow,
  * and the fog mixture of eq. 2 and 5 (weight w of Draine) */
-static inline float draine_eval_printed(float g, float alpha, float u)
+MP_FN float draine_eval_printed(float g, float alpha, float u)
 {
     return 1.0f / (4.0f * 3.14159265f) * (1 - g * g) / powf(1 + g * g - 2 * g * u, 1.5f)
            * (1 + alpha * u * u) / (1 + alpha * (1 + 2 * g * g) / 3);
 }
-static inline float fog_eval_printed(float g_hg, float g_d, float alpha, float w, float u)
+MP_FN float fog_eval_printed(float g_hg, float g_d, float alpha, float w, float u)
 {
     return (1 - w) * hg_eval_printed(g_hg, u) + w * draine_eval_printed(g_d, alpha, u);
 }
 
 /* Rayleigh: 3/(16 pi) (1 + u^2) */
-static inline float rayleigh_eval_printed(float u)
+MP_FN float rayleigh_eval_printed(float u)
 {
     return 3.0f / (16.0f * 3.14159265f) * (1 + u * u);
 }
@@ -66,9 +73,9 @@ static inline float rayleigh_eval_printed(float u)
 #define I18(T, EXP)                                                            \
     T tr = EXP(-H / wy * bt * EXP(-y0 / H) * (1 - EXP(-wy * s / H)));          \
     return b * tr + bs / bt * (1 - tr);
-static inline float  hfog_printedf(float b, float y0, float wy, float s, float H, float bt,
+MP_FN float  hfog_printedf(float b, float y0, float wy, float s, float H, float bt,
                                    float bs) { I18(float, expf) }
-static inline double hfog_printed(double b, double y0, double wy, double s, double H,
+MP_FN double hfog_printed(double b, double y0, double wy, double s, double H,
                                   double bt, double bs) { I18(double, exp) }
 #undef I18
 
