@@ -230,15 +230,20 @@ __global__ void k_time(F f, float *out)
     unsigned i = blockIdx.x * blockDim.x + threadIdx.x, s = i * 2654435761u + 12345u, it;
     float acc = 0;
     for (it = 0; it < TIME_ITERS; ++it) {
+        float x, y;
         s = s * 1664525u + 1013904223u;
-        acc += f((s >> 8) * 0x1p-24f);
+        x = (s >> 8) * 0x1p-24f;
+        s = s * 1664525u + 1013904223u;
+        y = (s >> 8) * 0x1p-24f;             /* the medium, for the varying rows */
+        acc += f(x, y);
     }
     out[i] = acc;
 }
 
 #define FN(NAME, EXPR)                                                              \
     struct NAME { float g, a; const mist_phasef *pf; const mist_phase *pd;           \
-        __device__ float operator()(float x) const { (void)pf; (void)pd; return (float)(EXPR); } };
+        __device__ float operator()(float x, float y) const {                          \
+            (void)pf; (void)pd; (void)y; return (float)(EXPR); } };
 FN(t_eq3f, hg_sample_printed(g, x))
 FN(t_hgf, mist_hg_samplef(g, x))
 FN(t_phf, mist_phase_samplef(pf, x))
@@ -254,6 +259,11 @@ FN(t_hgd, mist_hg_sample(g, (double)x))
 FN(t_eq6d, draine_eq6(g, a, (double)x))
 FN(t_drd, mist_draine_sample(g, a, (double)x))
 FN(t_phd, mist_phase_sample(pd, (double)x))
+/* a medium that varies per call (heterogeneous fog): g in [.05, .95], alpha in [1, 500] */
+FN(t_eq3fv, hg_sample_printed(0.05f + 0.9f * y, x))
+FN(t_hgfv, mist_hg_samplef(0.05f + 0.9f * y, x))
+FN(t_eq6fv, draine_eq6f(0.05f + 0.9f * y, 1 + 499 * y, x))
+FN(t_drfv, mist_draine_samplef(0.05f + 0.9f * y, 1 + 499 * y, x))
 
 static float *t_out;
 static int t_blocks, t_threads = 256;
@@ -287,7 +297,7 @@ template <class F> static F mk(float g, float a, const mist_phasef *pf, const mi
 
 static void row(const char *what, double t, double base)
 {
-    printf("| %-44s | %8.4f | %6.2fx |\n", what, t * 1e3, t / base);
+    printf("| %-46s | %8.4f | %6.2fx |\n", what, t * 1e3, t / base);
 }
 
 static void throughput(void)
@@ -311,7 +321,7 @@ static void throughput(void)
     printf("\nThroughput on %s (%d SMs): %d threads x %d calls a launch, median of 7 launches;\n"
            "ps per call = launch time / calls; ratio against the first row of its group\n\n",
            prop.name, prop.multiProcessorCount, t_blocks * t_threads, TIME_ITERS);
-    printf("| %-44s | %8s | %7s |\n|---|---:|---:|\n", "function (float unless marked)", "ps/call", "ratio");
+    printf("| %-46s | %8s | %7s |\n|---|---:|---:|\n", "function (float unless marked)", "ps/call", "ratio");
     b = time_one(mk<t_eq3f>(0.8f, 0, 0, 0));   row("HG sample, printed eq. 3, g .8", b, b);
     row("mist_hg_samplef", time_one(mk<t_hgf>(0.8f, 0, 0, 0)), b);
     row("mist_phase_samplef (HG, prepared)", time_one(mk<t_phf>(0, 0, pf_hg, 0)), b);
@@ -323,6 +333,10 @@ static void throughput(void)
     b = time_one(mk<t_drevp>(0.5f, 17, 0, 0)); row("Draine eval, printed eq. 5", b, b);
     row("mist_draine_evalf", time_one(mk<t_drev>(0.5f, 17, 0, 0)), b);
     row("mist_phase_evalf (fog, prepared)", time_one(mk<t_phev>(0, 0, pf_fog, 0)), b);
+    b = time_one(mk<t_eq3fv>(0, 0, 0, 0));     row("HG sample, printed eq. 3, g varying per call", b, b);
+    row("mist_hg_samplef, g varying per call", time_one(mk<t_hgfv>(0, 0, 0, 0)), b);
+    b = time_one(mk<t_eq6fv>(0, 0, 0, 0));     row("Draine sample, eq. 6, g and alpha varying", b, b);
+    row("mist_draine_samplef, g and alpha varying", time_one(mk<t_drfv>(0, 0, 0, 0)), b);
     b = time_one(mk<t_eq3d>(0.8f, 0, 0, 0));   row("HG sample, printed eq. 3, double", b, b);
     row("mist_hg_sample (double)", time_one(mk<t_hgd>(0.8f, 0, 0, 0)), b);
     b = time_one(mk<t_eq6d>(0.5f, 17, 0, 0));  row("Draine sample, printed eq. 6, double", b, b);
