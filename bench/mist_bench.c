@@ -386,6 +386,25 @@ static double hg_eval_bare(double g, double u)
     double v2 = 1 + g * g - 2 * g * u;
     return (1 - g * g) * MIST__INV4PI / (v2 * sqrt(v2));
 }
+/* g known only at run time, as in a renderer: one medium's g read once
+ * (rt_g, volatile), and a g for each call (gv: uniform in [.05, .95]; gs:
+ * of either sign, |g| <= .95).  With the literal 0.8 above the compiler
+ * folds every g-only term for mist and the baseline alike. */
+static float gv[N], gs[N];
+static double b_bare_evalf_rt(void) LOOP_RT(float, float g = rt_g, hg_eval_baref(g, uf[i]))
+static double b_eq3f_rt(void)       LOOP_RT(float, float g = rt_g, hg_sample_printed(g, xf[i]))
+static double b_bare_eval_rt(void)  LOOP_RT(double, double g = rt_g, hg_eval_bare(g, ud[i]))
+static double b_hg_eval_rt(void)    LOOP_RT(double, double g = rt_g, mist_hg_eval(g, ud[i]))
+static double b_eq3_rt(void)        LOOP_RT(double, double g = rt_g, hg_sample_printed_d(g, xd[i]))
+static double b_hg_sample_rt(void)  LOOP_RT(double, double g = rt_g, mist_hg_sample(g, xd[i]))
+static double b_bare_evalf_gv(void) LOOP(float, hg_eval_baref(gv[i], uf[i]))
+static double b_hg_evalf_gv(void)   LOOP(float, mist_hg_evalf(gv[i], uf[i]))
+static double b_eq3f_gv(void)       LOOP(float, hg_sample_printed(gv[i], xf[i]))
+static double b_hg_samplef_gv(void) LOOP(float, mist_hg_samplef(gv[i], xf[i]))
+static double b_bare_evalf_gs(void) LOOP(float, hg_eval_baref(gs[i], uf[i]))
+static double b_hg_evalf_gs(void)   LOOP(float, mist_hg_evalf(gs[i], uf[i]))
+static double b_eq3f_gs(void)       LOOP(float, hg_sample_printed(gs[i], xf[i]))
+static double b_hg_samplef_gs(void) LOOP(float, mist_hg_samplef(gs[i], xf[i]))
 static double b_bare_evalf(void)   LOOP(float, hg_eval_baref(0.8f, uf[i]))
 static double b_bare_eval(void)    LOOP(double, hg_eval_bare(0.8, ud[i]))
 static double b_bare_sample(void)  LOOP(double, hg_sample_printed_d(0.8, xd[i]))
@@ -458,6 +477,16 @@ static void hg_target_rows(void)
     row("  the same at g .5", b_hg_sample_nold5, "eq. 3", b);
     row("  the same at g .3", b_hg_sample_nold3, "eq. 3", b);
     row("  the same at g .1", b_hg_sample_nold1, "eq. 3", b);
+    printf("g at run time (read once), baseline with the same g:\n");
+    row("mist_hg_evalf", b_hg_evalf_unprep, "bare", b_bare_evalf_rt);
+    row("mist_hg_eval", b_hg_eval_rt, "bare", b_bare_eval_rt);
+    row("mist_hg_samplef", b_hg_samplef_unprep, "eq. 3", b_eq3f_rt);
+    row("mist_hg_sample", b_hg_sample_rt, "eq. 3", b_eq3_rt);
+    printf("g new each call (float; in [.05, .95], then of random sign):\n");
+    row("mist_hg_evalf", b_hg_evalf_gv, "bare", b_bare_evalf_gv);
+    row("mist_hg_samplef", b_hg_samplef_gv, "eq. 3", b_eq3f_gv);
+    row("mist_hg_evalf (random sign)", b_hg_evalf_gs, "bare", b_bare_evalf_gs);
+    row("mist_hg_samplef (random sign)", b_hg_samplef_gs, "eq. 3", b_eq3f_gs);
     b = v_bare_evalf;
     row("bare HG eval (float, vector)", v_bare_evalf, NULL, NULL);
     row("mist_hg_eval_nf", n_hg_evalf, "bare", b);
@@ -915,6 +944,10 @@ int main(void)
         ud[i] = 2 * xd[i] - 1;
         xf[i] = (float)xd[i];
         uf[i] = (float)ud[i];
+    }
+    for (i = 0; i < N; ++i) {       /* g per call: from other xi, in [.05, .95] */
+        gv[i] = 0.05f + 0.9f * xf[(i * 2654435761u) % N];
+        gs[i] = (i * 40503u >> 7) % 2 ? gv[i] : -gv[i];
     }
     ph_hgf = mist_phase_hgf(0.8f);              /* the media, prepared once */
     ph_drf = mist_phase_drainef(0.5f, 17.f);
