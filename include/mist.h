@@ -1021,8 +1021,11 @@ MIST__F MIST__T MIST__FN(mist_hg_eval)(MIST__T g, MIST__T u)
 MIST__F MIST__T MIST__FN(mist_draine_eval)(MIST__T g, MIST__T alpha, MIST__T u)
 {
     MIST__T c0, c1;
-    if (!(u == u)) return MIST__C(0);
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+    if ((MIST__M(fabs)(g) < MIST__C(1)) & (MIST__M(fabs)(u) <= MIST__C(1)))   /* as HG's */
+        return MIST__FN(mist__draine_d)(MIST__FN(mist__hg_k)(g), g, c0, c1,
+                                        MIST__FN(mist__draine_cn)(g, c0, c1), u);
+    if (!(u == u)) return MIST__C(0);
     return MIST__FN(mist__dens)(MIST__FN(mist__g)(g), c0, c1,
                                 MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1)));
 }
