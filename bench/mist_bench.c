@@ -338,6 +338,20 @@ static void machine(void)
            );
 }
 
+/* Four media, one picked at random for each call (mi), their parameters
+ * read from memory each call by mist and the baselines alike, as in a
+ * renderer's loop over rays: no parameter-only work can leave the loop
+ * (with one global medium above, the compiler hoists it for both). */
+static int mi[N];
+static const float md_g[4] = { 0.5f, 0.8f, 0.1f, 0.7f }, md_a[4] = { 17.f, 3.f, 250.f, 40.f };
+static mist_phasef md_dr[4], md_hg[4];
+static double b_eq6f_media(void)    LOOP(float, draine_eq6f(md_g[mi[i]], md_a[mi[i]], xf[i]))
+static double b_phase_dr_media(void) LOOP(float, mist_phase_samplef(&md_dr[mi[i]], xf[i]))
+static double b_draine_media(void)  LOOP(float, mist_draine_samplef(md_g[mi[i]], md_a[mi[i]], xf[i]))
+static double b_eq3f_media(void)    LOOP(float, hg_sample_printed(md_g[mi[i]], xf[i]))
+static double b_phase_hg_media(void) LOOP(float, mist_phase_samplef(&md_hg[mi[i]], xf[i]))
+static double b_hg_media(void)      LOOP(float, mist_hg_samplef(md_g[mi[i]], xf[i]))
+
 /* Prepared (mist_phase_*) against unprepared, same parameters, same run:
  * the ratio is the saving of preparing once per medium. */
 static void prepared_rows(void)
@@ -369,6 +383,13 @@ static void prepared_rows(void)
     row("mist_phase_evalf (fog, 10 um)", b_phase_fog_evalf, "mist_fog_evalf", base);
     base = b_fog_samplef_rt;
     row("mist_phase_samplef (fog, 10 um)", b_phase_fog_samplef, "mist_fog_samplef", base);
+    printf("four media (g, alpha: .5, 17; .8, 3; .1, 250; .7, 40), one at random each call:\n");
+    row("eq. 6 float", b_eq6f_media, NULL, NULL);
+    row("mist_phase_samplef (Draine)", b_phase_dr_media, "eq. 6 float", b_eq6f_media);
+    row("mist_draine_samplef", b_draine_media, "eq. 6 float", b_eq6f_media);
+    row("eq. 3 float (the same g)", b_eq3f_media, NULL, NULL);
+    row("mist_phase_samplef (HG)", b_phase_hg_media, "eq. 3 float", b_eq3f_media);
+    row("mist_hg_samplef", b_hg_media, "eq. 3 float", b_eq3f_media);
 }
 
 /* ---- HG against its bare formula; the batch forms -------------------- */
@@ -948,6 +969,11 @@ int main(void)
     for (i = 0; i < N; ++i) {       /* g per call: from other xi, in [.05, .95] */
         gv[i] = 0.05f + 0.9f * xf[(i * 2654435761u) % N];
         gs[i] = (i * 40503u >> 7) % 2 ? gv[i] : -gv[i];
+    }
+    for (i = 0; i < N; ++i) mi[i] = (int)((i * 2246822519u) >> 30);   /* 0..3 */
+    for (i = 0; i < 4; ++i) {
+        md_dr[i] = mist_phase_drainef(md_g[i], md_a[i]);
+        md_hg[i] = mist_phase_hgf(md_g[i]);
     }
     ph_hgf = mist_phase_hgf(0.8f);              /* the media, prepared once */
     ph_drf = mist_phase_drainef(0.5f, 17.f);

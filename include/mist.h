@@ -1801,6 +1801,9 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
 MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
     MIST__T w, g;
+    if (p && !(p->w > MIST__C(0)) && (MIST__M(fabs)(p->g_hg) < MIST__C(1))
+        & (xi > MIST__C(0)) & (xi <= MIST__C(1)))          /* HG, in the domain: */
+        return MIST__FN(mist__hg_u)(p->g_hg, xi);          /* one test, as mist_hg_sample */
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
     if (!p) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
     w = p->w;
