@@ -1082,7 +1082,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
  * instruction (mist__hg_ddu), else by the three forms in long double (0.5
  * ulp instead of up to 4.4 in double, measured), or without a wider type
  * by mist__hg_dbl. */
-MIST__F MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
     /* the mirror on the arguments, one call (g of random sign: 2.4x eq. 3
