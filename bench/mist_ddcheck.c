@@ -16,17 +16,13 @@
 
 static uint64_t s_ = 88172645463325252ull;
 static double rnd(void) { s_ ^= s_ << 13; s_ ^= s_ >> 7; s_ ^= s_ << 17; return (s_ >> 11) * 0x1p-53; }
-static double ulp(double x) { x = fabs(x); return nextafter(x, INFINITY) - x; }
 
 /* one sampler (kind 0 HG, 1 Rayleigh) at (g, xi): tallies */
 static void check(int kind, double g, double xi, double *worst, long *exact, long *rev)
 {
     double u = kind ? mist_rayleigh_sample(xi) : mist_hg_sample(g, xi), x2 = nextafter(xi, 2);
     qreal rg = kind ? 0 : g, ra = kind ? 1 : 0;
-    double us = (double)ref_sample_from(rg, ra, xi, u);
-    double tol = 4 * ulp(us)
-                 + (fabs((double)rg) < 1 ? 4 * 0x1p-53 * xi / (double)ref_density_u(rg, ra, us) : 0);
-    double r = fabs(u - us) / tol;
+    double us, r = ref_bar((double)rg, ra, xi, u, 0, &us);
     if (r > *worst) *worst = r;
     *exact += u == us;
     if (x2 <= 1 && (kind ? mist_rayleigh_sample(x2) : mist_hg_sample(g, x2)) < u) ++*rev;
