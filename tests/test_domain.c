@@ -229,6 +229,37 @@ static void test_sweep(void)
     mt_check(badf == 0, "float sweep over domain edges: %d bad results", badf);
 }
 
+/* The float HG sampler tests its domain on the bits of g and xi (|g| < 1,
+ * xi in [+0, 1]; mist__gxi_in) before any floating-point test: on both
+ * sides of every edge of that test (the last float below 1, 1, the first
+ * above, -0, the smallest subnormals, infinities, NaN of either sign) the
+ * answer must be the documented one: the sample at the sanitised g and xi
+ * (u = g where |g| = 1), in [-1, 1], u = -1 at xi = 0 and +1 at xi = 1,
+ * and the batch form the same. */
+static void test_hg_bits(void)
+{
+    static const float gs[] = { 0, -0.0f, 0x1p-149f, -0x1p-149f, 0.5f, -0.5f, 0x1.fffffep-1f,
+                                -0x1.fffffep-1f, 1, -1, 0x1.000002p0f, -0x1.000002p0f,
+                                INFINITY, -INFINITY, NAN, -NAN };
+    static const float xs[] = { 0, -0.0f, 0x1p-149f, -0x1p-149f, -1e-30f, 0.5f, 0x1.fffffep-1f,
+                                1, 0x1.000002p0f, INFINITY, -INFINITY, NAN, -NAN };
+    enum { NX = sizeof xs / sizeof *xs };
+    size_t i, j;
+    int bad = 0;
+    for (i = 0; i < sizeof gs / sizeof *gs; ++i) {
+        float g = gs[i], gc = g != g ? 0 : (g < -1 ? -1 : (g > 1 ? 1 : g)), out[NX];
+        mist_hg_sample_nf(g, xs, out, NX);
+        for (j = 0; j < NX; ++j) {
+            float x = xs[j], xc = x != x ? 0 : (x < 0 ? 0 : (x > 1 ? 1 : x));
+            float u = mist_hg_samplef(g, x);
+            float want = (gc == 1 || gc == -1) ? gc
+                       : xc == 0 ? -1 : xc == 1 ? 1 : mist_hg_samplef(gc, xc);
+            bad += !(u == want) || !(u >= -1 && u <= 1) || !(out[j] == u);
+        }
+    }
+    mt_check(bad == 0, "float HG sampler on the edges of its bit test: %d bad", bad);
+}
+
 /* Prepared phase functions (mist_phase_*): bad parameters and inputs give
  * what the unprepared functions give (to a few ulps: the prepared density
  * rounds in another order, and the sampler's F(0) is stored, not
@@ -330,5 +361,6 @@ int main(void)
     test_directions();
     test_fog();
     test_sweep();
+    test_hg_bits();
     return mt_done("test_domain");
 }
