@@ -1142,7 +1142,8 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 #if defined(MIST__W_EXACT)
     /* float: the parameter's terms before any branch, so that a caller's
      * loop over one medium hoists them (computed inside the domain test's
-     * branch they were not: 1.3x eq. 3 with g at run time, 1.04x now) */
+     * branch they were not: 1.28x eq. 3 with g at run time, 0.88-0.90x
+     * now, README) */
     MIST__W gw = (MIST__W)g, x = (MIST__W)xi, omg, c;
     MIST__WFN(mist__hg_pre)(gw, &omg, &c);
     if (MIST__FN(mist__gxi_in)(g, xi))
