@@ -1139,11 +1139,14 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
  * Domain: g in [-1, 1], xi in [0, 1]. */
 MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 {
-#if defined(MIST__W_EXACT)
+#if defined(MIST__W_EXACT) && !defined(__CUDA_ARCH__)
     /* float: the parameter's terms before any branch, so that a caller's
      * loop over one medium hoists them (computed inside the domain test's
      * branch they were not: 1.28x eq. 3 with g at run time, 0.88-0.90x
-     * now, README) */
+     * now, README).  Not in CUDA device code: there nvcc allocated the
+     * unprepared float Draine sampler, which inlines this for alpha = 0,
+     * 90 registers with it against 68 without (ptxas -v, sm_90, nvcc 13;
+     * the same arithmetic either way) */
     MIST__W gw = (MIST__W)g, x = (MIST__W)xi, omg, c;
     MIST__WFN(mist__hg_pre)(gw, &omg, &c);
     if (MIST__FN(mist__gxi_in)(g, xi))
