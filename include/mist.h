@@ -1882,8 +1882,9 @@ MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 #endif
     if (xi < w || w >= MIST__C(1)) {
         MIST__T x = w >= MIST__C(1) ? xi : xi / w, st, u;
-        /* the prepared try inlined here, before the unprepared sampler's
-         * tests (4-6% of the time of a sample, measured) */
+        /* the prepared try inlined here, ahead of the unprepared sampler's
+         * tests (one medium: 0.84x the time where this function is inlined
+         * in the caller's loop, 0.97x where it is a call; measured) */
         if (MIST__M(fabs)(p->g) < MIST__C(1) && p->c1 != MIST__C(0)) {
             if (MIST__FN(mist__phase_try)(p->g, p->alpha, p->tab, x, &st, &u)) return u;
             return MIST__FN(mist__draine_finish)(p->g, p->alpha, p->c0, p->c1, x, p->f0, st);
