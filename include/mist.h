@@ -604,7 +604,6 @@ MIST__F MIST__HOT int MIST__FN(mist__gxi_in)(MIST__T g, MIST__T xi)
 }
 #endif
 
-
 /* xi and u: NaN -> 0 resp. caller-handled; clamped to [lo, hi]. */
 MIST__F MIST__T MIST__FN(mist__clamp)(MIST__T x, MIST__T lo, MIST__T hi)
 {
