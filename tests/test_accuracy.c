@@ -452,6 +452,57 @@ static void test_near_one(void)
 }
 
 /* The reported failures themselves (independent float128 values). */
+/* The unprepared float Draine sampler's certificate (mist__draine_certf;
+ * its first try, mist__draine_try6f): it must accept only the root
+ * correctly rounded to float, never a float neighbour of it, and the try
+ * must return only that.  Random |g| log-spaced in [1e-3, 0.9999] (a fifth
+ * within 1e-4..1e-1 of 1), either sign; alpha log-uniform in [1e-6, 1e4]
+ * (the try's domain); xi uniform and crowded towards 0 and 1; u* in
+ * __float128 (tests/mist_ref.h), rounded once to float.  Negative control:
+ * the same check of a certificate that tests the midpoints one ulp further
+ * out (so it takes any float within 1.5 ulp) must find wrong acceptances.
+ * The acceptance floor, half of the roundings, only catches a certificate
+ * that (safely but slowly) accepts almost nothing: 93% measured here. */
+static int loose_cert(float g, float a, float xi, float uf)
+{
+    float lo = nextafterf(nextafterf(uf, -2), -2), hi = nextafterf(nextafterf(uf, 2), 2);
+    double rl = mist__draine_res(g, 1, a, xi, 0.5 * ((double)lo + nextafterf(uf, -2)), 0);
+    double rh = mist__draine_res(g, 1, a, xi, 0.5 * ((double)hi + nextafterf(uf, 2)), 0);
+    return uf > -1 && uf < 1 && rl < 0 && rh > 0;
+}
+static void test_cert(void)
+{
+    mt_rng r = { 505 };
+    long n = mt_scale(20000, 2000), i, valid = 0, acc = 0, wrong = 0, tried = 0, off = 0;
+    long wrong_ctl = 0;
+    for (i = 0; i < n; ++i) {
+        double t = mt_uniform(&r), x = mt_uniform(&r);
+        float g = (float)(mt_uniform(&r) < 0.2 ? 1 - pow(10, -1 - 3 * t) : pow(10, -3 * t));
+        float a = (float)pow(10, -6 + 10 * mt_uniform(&r)), xi, rn, u, st;
+        g = g > 0.9999f ? 0.9999f : g;
+        g = i % 2 ? -g : g;
+        xi = (float)(i % 3 == 1 ? pow(x, 8) : i % 3 == 2 ? 1 - pow(x, 8) : x);
+        rn = (float)ref_sample(g, a, xi);
+        if (!(rn > -1 && rn < 1 && rn != 0)) continue;
+        ++valid;
+        acc   += mist__draine_certf(g, a, xi, rn);
+        wrong += mist__draine_certf(g, a, xi, nextafterf(rn, -2))
+               + mist__draine_certf(g, a, xi, nextafterf(rn, 2));
+        wrong_ctl += loose_cert(g, a, xi, nextafterf(rn, -2))
+                   + loose_cert(g, a, xi, nextafterf(rn, 2));
+        if (mist__draine_try6f(g, a, xi, &st, &u)) { ++tried; off += u != rn; }
+    }
+    mt_check(wrong == 0 && off == 0, "float Draine certificate: %ld of %ld neighbours of the "
+             "correctly rounded root accepted, %ld of %ld first tries not it", wrong,
+             2 * valid, off, tried);
+    mt_check(2 * acc >= valid, "float Draine certificate accepts %ld of %ld correctly "
+             "rounded roots (floor: half)", acc, valid);
+    mt_check(wrong_ctl > 0, "control: a certificate one ulp too loose must accept "
+             "neighbours (%ld)", wrong_ctl);
+    printf("test_accuracy: float Draine certificate: %ld of %ld correctly rounded roots "
+           "accepted, %ld of their neighbours; control %ld\n", acc, valid, wrong, wrong_ctl);
+}
+
 static void test_issue2_points(void)
 {
     check_point(KIND_DRAINE, 0, 0x1p20, 0x1.fffffep-2);
@@ -480,6 +531,7 @@ int main(void)
     test_monotone();
     test_monotone_midpoints();
     test_rayleigh_ends();
+    test_cert();
     printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f%s, float %.3f\n",
            n_points, worst_d, NOLD ? " (of the relaxed bound, MIST_NO_LONG_DOUBLE)" : "",
            worst_f);
