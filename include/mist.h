@@ -451,7 +451,14 @@ typedef struct mist_hfogf {
 
 /* [JD23 eq. 6] as printed, in double: only a starting point for the exact
  * Draine sampler (it cancels as 1/g^3 and is NaN at g = 0 or alpha = 0;
- * see "Draine and Cornette-Shanks: exact sampling"). */
+ * see "Draine and Cornette-Shanks: exact sampling").  Its divisions are
+ * moved off the chain of dependent operations, for latency: t6 / t7 as
+ * t6 t7^2 / s (s = t7^3 > 0, its division runs beside the cbrt), 8 t4 /
+ * (t0 t9) as 8 t4 t9 / (t0 t9^2) (beside the sqrt), 2 / t0 once.  The same
+ * value to a few ulps; the unprepared samplers 0.87-0.88x (float) and
+ * 0.92x (double) the time with the form as printed (one-off A/B harness,
+ * interleaved in one process; float samples bit for bit the same over 2e6
+ * random inputs, double ones within the bar: 96 of 5e5 differ, near u = 0). */
 #ifndef MIST_NO_DRAINE
 MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 {
@@ -462,11 +469,13 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
     double t3 = g * (2 * xi - 1);
     double t4 = 3 * g2 * (1 + t3) + alpha * (2 + g2 * (1 + (1 + 2 * g2) * t3));
     double t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;
-    double t6 = t0 * 4 * (g4 - g2);
-    double t7 = cbrt(t5 + sqrt(t5 * t5 - t6 * t6 * t6));
-    double t8 = 2 * (t1 + t6 / t7 + t7) / t0;
-    double t9 = sqrt(6 * (1 + g2) + t8);
-    double w = sqrt(6 * (1 + g2) - t8 + 8 * t4 / (t0 * t9)) - t9;
+    double t6 = t0 * 4 * (g4 - g2), i0 = 2 / t0;
+    double s  = t5 + sqrt(t5 * t5 - t6 * t6 * t6);
+    double t7 = cbrt(s), r6 = t6 / s;
+    double t8 = (t1 + r6 * t7 * t7 + t7) * i0;
+    double y  = 6 * (1 + g2) + t8, q = 4 * t4 * i0 / y;
+    double t9 = sqrt(y);
+    double w = sqrt(6 * (1 + g2) - t8 + q * t9) - t9;
     return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
 }
 #endif /* !MIST_NO_DRAINE */
