@@ -1272,7 +1272,8 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* float at 93% of random (g, alpha, xi) in its domain, all but 3 of 2e6 at */
 /* g .5, alpha 17; measured).  mist_bench: mist_draine_samplef (g .5, a 17) */
 /* 100-101 -> 86-87 ns, 4.5x -> 3.8-3.9x the printed eq. 6 in float; with   */
-/* eq. 6 reordered (mist__draine_eq6) 76-78 ns, 3.5x.                       */
+/* eq. 6 reordered (mist__draine_eq6) 76-78 ns, 3.5x; with mist__cbrt       */
+/* 68-69 ns, 3.1-3.2x.                                                      */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
