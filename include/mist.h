@@ -2009,8 +2009,6 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
     return r;
 }
 
-/* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0): the exact
- * inverse CDF, as the unprepared sampler of the same kind. */
 /* The HG lobe's sample at xi: float (host code) with the terms of g read
  * from the medium (p->hg), the same arithmetic as mist_hg_sample's: in a
  * one-off harness (calls, not inlined) the prepared HG sampler took 1.47
@@ -2027,6 +2025,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
     return MIST__FN(mist_hg_sample)(p->g_hg, xi);
 }
 
+/* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0): the exact
+ * inverse CDF, as the unprepared sampler of the same kind. */
 MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
     MIST__T w;
