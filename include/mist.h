@@ -1001,6 +1001,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* <= 1.9e-3), then two Halley steps (cubic convergence: ~1e-8, then        */
 /* rounding): measured <= 3.2 ulps of v in the type it runs in over 2e4     */
 /* random x.  No branch, no libm call: the float batch form vectorises.    */
+/* Float takes one step from a better start instead (mist__rayleigh_v).     */
 /* Double evaluates it in long double, float in double (as HG).  Where fma  */
 /* is one instruction (as HG) double finishes in double-double instead: one */
 /* Newton step on the residual by compensated Horner with fma, u = v - 1    */
