@@ -412,7 +412,7 @@ typedef struct mist_phasef {
     float  f0[4];
     float  tab[3 * MIST__PHASE_K + 2];
     double hg[3];               /* g_hg, 1 - g_hg, 2 (1 - g_hg)^2 in double: the HG
-                                   sampler's terms of g (mist__hg_pre) */
+                                   sampler's terms of g (mist__hg_par) */
 } mist_phasef;
 
 /* A linear RGB triple: radiance, or a coefficient per colour band. */
@@ -911,6 +911,22 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_one)(MIST__T g, MIST__T omg, MIST__T
     return MIST__C(1) - y * c * MIST__FN(mist__fma)(g, x, MIST__C(1)) / (d * d);
 }
 
+#if defined(MIST__W_EXACT)
+/* float: the terms of g in double, t = (g, 1 - g, 2 (1 - g)^2), computed
+ * once per g (mist_hg_sample before its branch, a prepared medium), and
+ * the sample at a float xi from them: the one form in double */
+MIST__F MIST__HOT void MIST__FN(mist__hg_par)(MIST__T g, MIST__W *t)
+{
+    t[0] = (MIST__W)g;
+    MIST__WFN(mist__hg_pre)(t[0], &t[1], &t[2]);
+}
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_at)(const MIST__W *t, MIST__T xi)
+{
+    MIST__W x = (MIST__W)xi;
+    return (MIST__T)MIST__WFN(mist__hg_one)(t[0], t[1], t[2], x, 1 - x);
+}
+#endif
+
 #if defined(MIST__DD)
 /* DOUBLE-DOUBLE (see the section comment): u for g in [0, 1) at x = xh + xl,
  * y = yh + yl = 1 - x exactly (one of the pairs has lo = 0) */
@@ -1212,9 +1228,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
-    MIST__W gw = (MIST__W)g, x = (MIST__W)xi, omg, c;
-    MIST__WFN(mist__hg_pre)(gw, &omg, &c);
-    return (MIST__T)MIST__WFN(mist__hg_one)(gw, omg, c, x, (MIST__W)1 - x);
+    MIST__W t[3];
+    MIST__FN(mist__hg_par)(g, t);
+    return MIST__FN(mist__hg_at)(t, xi);
 #elif defined(MIST__DD)
     return MIST__FN(mist__hg_ddu)(g, xi, MIST__C(0), MIST__C(1));
 #elif defined(MIST__W)
@@ -1236,10 +1252,9 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
      * unprepared float Draine sampler, which inlines this for alpha = 0,
      * 90 registers with it against 68 without (ptxas -v, sm_90, nvcc 13;
      * the same arithmetic either way) */
-    MIST__W gw = (MIST__W)g, x = (MIST__W)xi, omg, c;
-    MIST__WFN(mist__hg_pre)(gw, &omg, &c);
-    if (MIST__FN(mist__gxi_in)(g, xi))
-        return (MIST__T)MIST__WFN(mist__hg_one)(gw, omg, c, x, (MIST__W)1 - x);
+    MIST__W t[3];
+    MIST__FN(mist__hg_par)(g, t);
+    if (MIST__FN(mist__gxi_in)(g, xi)) return MIST__FN(mist__hg_at)(t, xi);
 #endif
     if (!((MIST__M(fabs)(g) < MIST__C(1)) & (xi > MIST__C(0)) & (xi <= MIST__C(1)))) {
         g  = MIST__FN(mist__g)(g);              /* outside: sanitise */
@@ -1711,7 +1726,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_try6)(MIST__T g, MIST__T alpha, MIST
                                                   MIST__T *st, MIST__T *u)
 {
     int m = xi > MIST__C(0.5);
-    MIST__T x = m ? MIST__C(1) - xi : xi, ag = MIST__M(fabs)(g);
+    MIST__T x = m ? MIST__C(1) - xi : xi, ag = MIST__FN(mist__abs)(g);
     MIST__W sg = m ? -1 : 1;
     if (!(ag >= MIST__C(1e-3) && ag <= MIST__C(0.9999) && alpha >= MIST__C(1e-6)
           && alpha <= MIST__C(1e4) && x > MIST__C(0)))
@@ -1905,8 +1920,7 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
     p.kind  = kind;
     p.g_hg  = MIST__FN(mist__g)(g_hg);
 #if defined(MIST__W_EXACT)
-    p.hg[0] = (MIST__W)p.g_hg;
-    MIST__WFN(mist__hg_pre)(p.hg[0], &p.hg[1], &p.hg[2]);
+    MIST__FN(mist__hg_par)(p.g_hg, p.hg);
 #endif
     p.g     = MIST__FN(mist__g)(g);
     p.alpha = alpha > MIST__C(0) ? alpha : MIST__C(0);
@@ -2039,9 +2053,7 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
 MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T xi)
 {
 #if defined(MIST__W_EXACT) && !defined(__CUDA_ARCH__)
-    if (MIST__FN(mist__gxi_in)(p->g_hg, xi))
-        return (MIST__T)MIST__WFN(mist__hg_one)(p->hg[0], p->hg[1], p->hg[2], (MIST__W)xi,
-                                                1 - (MIST__W)xi);
+    if (MIST__FN(mist__gxi_in)(p->g_hg, xi)) return MIST__FN(mist__hg_at)(p->hg, xi);
 #endif
     return MIST__FN(mist_hg_sample)(p->g_hg, xi);
 }
@@ -2325,10 +2337,9 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
          * and 1 of the clamp at run time (see below) */
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1;
-        MIST__W gw = (MIST__W)g, omg, c;
-        MIST__WFN(mist__hg_pre)(gw, &omg, &c);
-        MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
-                     y_[j_] = (MIST__T)MIST__WFN(mist__hg_one)(gw, omg, c, x, 1 - x))
+        MIST__W t[3];
+        MIST__FN(mist__hg_par)(g, t);
+        MIST__BLOCKS(y_[j_] = MIST__FN(mist__hg_at)(t, MIST__FN(mist__clamp01)(x_[j_], z, one)))
     }
 #elif defined(MIST__DD)
     {   /* double-double (mist__hg_ddu), branch-free, 0 and 1 read at run
@@ -2756,10 +2767,10 @@ MIST__F MIST__T MIST__FN(mist__ddiv)(MIST__T n, MIST__T ne, MIST__T H, MIST__T *
  * transition penalty (perf: 62% of ldexpf's samples on its second
  * instruction; the caller issues vzeroupper before its calls, so the
  * dirty state's source is not pinned down): there the float layered fog
- * took 14 us a ray with libm's, 7.8 with these.  In a small program without the penalty
- * they cost the float transmittance and in-scatter 5-7% (interleaved A/B)
- * and gained the double in-scatter 5% and the layers 6%.  libm elsewhere,
- * and in CUDA device code (intrinsics there). */
+ * took 14 us a ray with libm's, 7.8 with these.  In a small program
+ * without the penalty they cost the float transmittance and in-scatter
+ * 5-7% (interleaved A/B) and gained the double in-scatter 5% and the
+ * layers 6%.  libm elsewhere, and in CUDA device code (intrinsics there). */
 MIST__F MIST__T MIST__FN(mist__frexp)(MIST__T x, int *e)
 {
 #if !defined(__CUDA_ARCH__)

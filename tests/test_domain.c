@@ -235,7 +235,8 @@ static void test_sweep(void)
  * above, -0, the smallest subnormals, infinities, NaN of either sign) the
  * answer must be the documented one: the sample at the sanitised g and xi
  * (u = g where |g| = 1), in [-1, 1], u = -1 at xi = 0 and +1 at xi = 1,
- * and the batch form the same. */
+ * and the batch form and the prepared HG medium (mist__phase_hg: the same
+ * bit test, the terms of g stored) the same. */
 static void test_hg_bits(void)
 {
     /* each input beside its sanitised value (written out: the fast-math
@@ -254,12 +255,14 @@ static void test_hg_bits(void)
     int bad = 0;
     for (i = 0; i < sizeof gs / sizeof *gs; ++i) {
         float g = gs[i][0], gc = gs[i][1], out[NX];
+        mist_phasef ph = mist_phase_hgf(g);
         mist_hg_sample_nf(g, xs, out, NX);
         for (j = 0; j < NX; ++j) {
             float u = mist_hg_samplef(g, xs[j]);
             float want = (gc == 1 || gc == -1) ? gc
                        : xc[j] == 0 ? -1 : xc[j] == 1 ? 1 : mist_hg_samplef(gc, xc[j]);
-            bad += !(u == want) || !(u >= -1 && u <= 1) || !(out[j] == u);
+            bad += !(u == want) || !(u >= -1 && u <= 1) || !(out[j] == u)
+                 || !(mist_phase_samplef(&ph, xs[j]) == u);
         }
     }
     mt_check(bad == 0, "float HG sampler on the edges of its bit test: %d bad", bad);

@@ -21,7 +21,8 @@
  * e^-80..e^80 (float), lengths 0..+inf, extinction 0..large, H 1..1e4.
  * Results below the normal range (DBL_MIN / eps) cannot carry relative
  * precision and are compared absolutely.  Also the float e^x - 1 that the
- * float forms use (mist__expm1f) against expm1l (test_expm1). */
+ * float forms use (mist__expm1f) against expm1l (test_expm1), and its
+ * frexp and ldexp on the bits against libm's (test_frexp_ldexp). */
 #include "mist.h"
 #include "mist_test.h"
 
@@ -1108,6 +1109,54 @@ static int want(int argc, char **argv, const char *name)
     return 0;
 }
 
+/* frexp and ldexp on the bits (mist__frexp, mist__ldexp, float and double:
+ * the float and double forms of the height fog use them) against libm's,
+ * bit for bit (exact operations: one answer): random numbers of every
+ * binade and sign, and the edges (+-0, the smallest subnormal, the largest
+ * subnormal, the smallest normal, the largest finite, +-inf, NaN), times
+ * 2^k for k across the whole exponent range and beyond (results that
+ * overflow, turn subnormal or underflow to 0 go to libm), and frexp's
+ * exponent too.  Negative control: the same comparison of ldexp(x, k) with
+ * libm's ldexp(x, k + 1) must fail for every normal x whose result stays
+ * normal. */
+#define FL_CHECK(T, S, LIM, SMIN, SMAX, NMIN, NMAX)                                   \
+static void check_fl_##S(mt_rng *r, long n, long *bad, long *ctl, long *nctl)          \
+{                                                                                     \
+    static const T edge[] = { 0, -(T)0, SMIN, -(SMIN), SMAX, NMIN, -(NMIN), NMAX,     \
+                              -(NMAX), (T)INFINITY, -(T)INFINITY, (T)NAN, 1, (T)0.75 };\
+    long i;                                                                           \
+    for (i = 0; i < n + (long)(sizeof edge / sizeof *edge); ++i) {                    \
+        T x, a, b;                                                                    \
+        int k = (int)(mt_next(r) % (4 * LIM)) - 2 * LIM, ea = 0, eb = 0;              \
+        if (i < n) x = (T)ldexp(1 + mt_uniform(r), (int)(mt_next(r) % (2 * LIM)) - LIM); \
+        else x = edge[i - n];                                                         \
+        if (i & 1) x = -x;                                                            \
+        a = mist__ldexp##S(x, k); b = ldexp##S(x, k);                                 \
+        *bad += memcmp(&a, &b, sizeof a) != 0;                                        \
+        a = mist__frexp##S(x, &ea); b = frexp##S(x, &eb);                             \
+        *bad += memcmp(&a, &b, sizeof a) != 0 || (ea != eb && x == x && x - x == 0);  \
+        if (x - x == 0 && x != 0 && fabs((double)x) >= (double)(NMIN)                 \
+            && fabs((double)ldexp##S(x, k + 1)) >= (double)(NMIN)                     \
+            && fabs((double)ldexp##S(x, k + 1)) <= (double)(NMAX)) {                  \
+            a = mist__ldexp##S(x, k); b = ldexp##S(x, k + 1);                         \
+            *ctl += memcmp(&a, &b, sizeof a) != 0;                                    \
+            ++*nctl;                                                                  \
+        }                                                                             \
+    }                                                                                 \
+}
+FL_CHECK(float, f, 160, 0x1p-149f, 0x1.fffffcp-127f, FLT_MIN, FLT_MAX)
+FL_CHECK(double, , 1100, 0x1p-1074, 0x1.ffffffffffffep-1023, DBL_MIN, DBL_MAX)
+static void test_frexp_ldexp(void)
+{
+    mt_rng r = { 7 };
+    long n = mt_scale(200000, 20000), bad = 0, ctl = 0, nctl = 0;
+    check_fl_f(&r, n, &bad, &ctl, &nctl);
+    check_fl_(&r, n, &bad, &ctl, &nctl);
+    mt_check(bad == 0, "frexp, ldexp on the bits: %ld results not libm's", bad);
+    mt_check(nctl > 0 && ctl == nctl, "control: ldexp against libm's with k + 1 must differ "
+             "(%ld of %ld)", ctl, nctl);
+}
+
 /* The float e^x - 1 (mist__expm1f: in double, see the header) against
  * expm1l: within 1 ulp of float (0.75 documented) over x log-spread in
  * +-[1e-12, 87.4] and through the switch at 2^-26; the edges as libm: +-0
@@ -1160,6 +1209,6 @@ int main(int argc, char **argv)
     if (want(argc, argv, "layers")) test_layers();
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); }
     if (want(argc, argv, "bad")) test_bad();
-    if (want(argc, argv, "expm1")) test_expm1();
+    if (want(argc, argv, "expm1")) { test_expm1(); test_frexp_ldexp(); }
     return mt_done("test_height_fog");
 }
