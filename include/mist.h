@@ -1240,6 +1240,17 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 #endif
 }
 
+/* The HG sample at any g and xi: outside |g| < 1, xi in (0, 1] sanitised */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_any)(MIST__T g, MIST__T xi)
+{
+    if (!((MIST__M(fabs)(g) < MIST__C(1)) & (xi > MIST__C(0)) & (xi <= MIST__C(1)))) {
+        g  = MIST__FN(mist__g)(g);              /* outside: sanitise */
+        xi = MIST__FN(mist__clamp01)(xi, MIST__C(0), MIST__C(1));
+        if (g == MIST__C(1) || g == MIST__C(-1)) return g;
+    }
+    return MIST__FN(mist__hg_u)(g, xi);
+}
+
 /* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
  * Domain: g in [-1, 1], xi in [0, 1]. */
 MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
@@ -1248,20 +1259,15 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
     /* float: the parameter's terms before any branch, so that a caller's
      * loop over one medium hoists them (computed inside the domain test's
      * branch they were not: 1.28x eq. 3 with g at run time, 0.88-0.90x
-     * now, README).  Not in CUDA device code: there nvcc allocated the
-     * unprepared float Draine sampler, which inlines this for alpha = 0,
-     * 90 registers with it against 68 without (ptxas -v, sm_90, nvcc 13;
-     * the same arithmetic either way) */
+     * now, README; on an H200 1.78 -> 1.61 ps a sample).  The unprepared
+     * float Draine sampler calls mist__hg_any for alpha = 0 instead: in
+     * CUDA device code nvcc allocated it 90 registers with this inlined,
+     * 80 without (ptxas -v, sm_90, nvcc 13; the same arithmetic) */
     MIST__W t[3];
     MIST__FN(mist__hg_par)(g, t);
     if (MIST__FN(mist__gxi_in)(g, xi)) return MIST__FN(mist__hg_at)(t, xi);
 #endif
-    if (!((MIST__M(fabs)(g) < MIST__C(1)) & (xi > MIST__C(0)) & (xi <= MIST__C(1)))) {
-        g  = MIST__FN(mist__g)(g);              /* outside: sanitise */
-        xi = MIST__FN(mist__clamp01)(xi, MIST__C(0), MIST__C(1));
-        if (g == MIST__C(1) || g == MIST__C(-1)) return g;
-    }
-    return MIST__FN(mist__hg_u)(g, xi);
+    return MIST__FN(mist__hg_any)(g, xi);
 }
 
 #endif /* !MIST__INTERNAL_ONLY */
@@ -1325,7 +1331,7 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* 4.5x the printed eq. 6 in float -> 86-87 with two residuals at the       */
 /* midpoints, 3.8-3.9x; with eq. 6 reordered (mist__draine_eq6) 76-78 ns,   */
 /* 3.5x; with mist__cbrt 68-69 ns, 3.1-3.2x; with one residual 46-48 ns,    */
-/* 2.2x.  In CUDA device code too (H200: 27.7 -> 16.6 ps a sample, README). */
+/* 2.2x.  In CUDA device code too (H200: 27.7 -> 16.7 ps a sample, README). */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
@@ -1789,7 +1795,7 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
 {
     MIST__T u, st = MIST__C(2);
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
-    if (c1 == MIST__C(0)) return MIST__FN(mist__hg_u)(g, xi);
+    if (c1 == MIST__C(0)) return MIST__FN(mist__hg_any)(g, xi);   /* (mist_hg_sample) */
     if (tab && MIST__FN(mist__phase_try)(g, alpha, tab, xi, &st, &u)) return u;
 #if defined(MIST__W_EXACT)
     if (!tab && MIST__FN(mist__draine_try6)(g, alpha, xi, &st, &u)) return u;
@@ -2069,7 +2075,8 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
     return r;
 }
 
-/* The HG lobe's sample at xi: float (host code) with the terms of g read
+/* The HG lobe's sample at xi: float (also device code: H200 2.77 -> 2.70
+ * ps a sample) with the terms of g read
  * from the medium (p->hg), the same arithmetic as mist_hg_sample's: in a
  * one-off harness (calls, not inlined) the prepared HG sampler took 1.47
  * ns against 2.02 recomputing them (mist_hg_samplef with g hoisted: 1.33);
