@@ -626,7 +626,8 @@ static double c_bare_dir(void)   DIRLOOP(double, mist_vec3, bare_dir(wi, ud[i], 
 static double c_dirf(void)       DIRLOOP(float, mist_vec3f, mist_dir_from_cosf(wi, uf[i], XI2F))
 static double c_dir(void)        DIRLOOP(double, mist_vec3, mist_dir_from_cos(wi, ud[i], XI2D))
 #define NLOOP(T, V3, F) { V3 v; T s_ = 0; int i; for (i = 0; i < N; ++i) { \
-    v.x = (T)ud[i]; v.y = (T)ud[N - 1 - i]; v.z = (T)0.3; v = F(v); s_ += v.x; } return s_; }
+    v.x = (T)ud[i]; v.y = (T)ud[N - 1 - i]; v.z = (T)0.3; v = F(v); NOVEC(v.x); s_ += v.x; } \
+    return s_; }   /* (NOVEC: gcc had vectorised the double loops, bare and mist's) */
 static double c_bare_normf(void) NLOOP(float, mist_vec3f, bare_normf)
 static double c_bare_norm(void)  NLOOP(double, mist_vec3, bare_norm)
 static double c_normf(void)      NLOOP(float, mist_vec3f, mist_normalizef)

@@ -2200,21 +2200,54 @@ MIST__F MIST__FOG MIST__FN(mist_fog_from_diameter)(MIST__T d)
 /* sqrt((1-u)(1+u)): no cancellation near u = +-1.                          */
 /* ======================================================================== */
 
-/* Unit vector along v; zero, NaN or infinite v gives (0, 0, 1).  Scaled by
- * the largest component first, so no overflow or underflow. */
+#if !defined(MIST__W_EXACT)
+/* A power of 2 that scales finite m > 0 into [2, 4): 2^(EB - E) for m's
+ * exponent field E in [1, EB - 1] (m 2^(EB - E) = 1.f 2^(EB - 2 bias) =
+ * 1.f 2); for subnormal m (E = 0) 2^bias, the largest normal power, which
+ * makes it >= 2^(1 - MB).  Exact to multiply by; no division. */
+MIST__F MIST__T MIST__FN(mist__pow2inv)(MIST__T m)
+{
+    MIST__UB b, e, f = (MIST__UB)MIST__EB << MIST__MB;
+    MIST__T s;
+    memcpy(&b, &m, sizeof b);
+    e = b & f;
+    b = f - (e ? e : (MIST__UB)1 << MIST__MB);
+    memcpy(&s, &b, sizeof s);
+    return s;
+}
+#endif
+
+/* Unit vector along v; zero, NaN or infinite v gives (0, 0, 1).  Double:
+ * scaled first by a power of 2 that puts the largest component in [2, 4)
+ * (mist__pow2inv: exact), so no overflow or underflow.  Float: in double,
+ * where the squares of floats neither overflow nor underflow (<= 1.2e77,
+ * >= 2e-90), so |v|^2 itself tells 0, NaN and inf apart; one rounding at
+ * the end.  One division, for 1/|v| (it had divided by the largest
+ * component: three more; README, "Directions") */
 MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
 {
+#if defined(MIST__W_EXACT)
+    MIST__W x = v.x, y = v.y, z = v.z, d = x * x + y * y + z * z, il;
+    if (!(d > 0 && d < 1e300)) {                         /* 0, NaN, inf */
+        v.x = MIST__C(0); v.y = MIST__C(0); v.z = MIST__C(1);
+        return v;
+    }
+    il = 1 / sqrt(d);
+    v.x = (MIST__T)(x * il); v.y = (MIST__T)(y * il); v.z = (MIST__T)(z * il);
+#else
     MIST__T ax = MIST__M(fabs)(v.x), ay = MIST__M(fabs)(v.y), az = MIST__M(fabs)(v.z);
-    MIST__T m = ax > ay ? ax : ay, il;
+    MIST__T m = ax > ay ? ax : ay, s, il;
     m = m > az ? m : az;
     if (!(m > MIST__C(0)) || !(v.x - v.x == MIST__C(0) && v.y - v.y == MIST__C(0)
                                && v.z - v.z == MIST__C(0))) {  /* 0, NaN, inf */
         v.x = MIST__C(0); v.y = MIST__C(0); v.z = MIST__C(1);
         return v;
     }
-    v.x /= m; v.y /= m; v.z /= m;
+    s = MIST__FN(mist__pow2inv)(m);
+    v.x *= s; v.y *= s; v.z *= s;
     il = MIST__C(1) / MIST__M(sqrt)(v.x * v.x + v.y * v.y + v.z * v.z);
     v.x *= il; v.y *= il; v.z *= il;
+#endif
     return v;
 }
 

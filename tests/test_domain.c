@@ -170,6 +170,77 @@ static void test_directions(void)
              pdf2 == INFINITY, "|g| = 1 direction is +-wi with pdf +inf");
 }
 
+/* mist_normalize(f) over the whole range of finite vectors: components of
+ * random sign and exponent (float: 2^-149..2^127, double: 2^-1074..2^1023,
+ * each component 1 in 8 times zero), against v/|v| in long double (64-bit
+ * significand; where long double is no wider the test still runs, with a
+ * reference good to a few eps).  Bars: float 1 ulp of 1 per component (one
+ * rounding of a double result), double 4 eps (the power-of-2 scaling is
+ * exact; then |v|^2, sqrt, 1/x and a product: 3 roundings of ~1/2 eps and
+ * the sum's); a unit vector.  Control: the bare formula (no scaling, in T)
+ * over the same vectors must fail (overflow and underflow of |v|^2). */
+static long double ld_pow2(int e) { return ldexpl(1.0L, e); }
+static void test_normalize(void)
+{
+    mt_rng r = { 909 };
+    long n = mt_scale(200000, 20000), i, badf = 0, badd = 0, ctlf = 0, ctld = 0;
+    double worstf = 0, worstd = 0;
+    for (i = 0; i < n; ++i) {
+        long double c[3], l2 = 0, cf[3], lf2 = 0;
+        mist_vec3 v, o; mist_vec3f vf, of;
+        int k;
+        float bf; double bd, ef = 0, ed = 0, e;
+        for (k = 0; k < 3; ++k) {
+            double m = 1 + mt_uniform(&r);
+            int z = mt_next(&r) % 8 == 0, sg = mt_next(&r) % 2 ? -1 : 1;
+            double x = z ? 0 : sg * ldexp(m, (int)(mt_next(&r) % 2098) - 1075);
+            float xf = z ? 0 : (float)(sg * ldexp(m, (int)(mt_next(&r) % 278) - 150));
+            c[k] = x; cf[k] = xf;
+        }
+        v.x = (double)c[0]; v.y = (double)c[1]; v.z = (double)c[2];
+        vf.x = (float)cf[0]; vf.y = (float)cf[1]; vf.z = (float)cf[2];
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;                /* (what was passed) */
+        cf[0] = vf.x; cf[1] = vf.y; cf[2] = vf.z;
+        {   /* |v| in long double, scaled by a power of 2 */
+            long double mx = fabsl(c[0]) > fabsl(c[1]) ? fabsl(c[0]) : fabsl(c[1]);
+            long double mf = fabsl(cf[0]) > fabsl(cf[1]) ? fabsl(cf[0]) : fabsl(cf[1]);
+            int ex, exf;
+            mx = mx > fabsl(c[2]) ? mx : fabsl(c[2]);
+            mf = mf > fabsl(cf[2]) ? mf : fabsl(cf[2]);
+            if (mx == 0 || mf == 0) continue;
+            frexpl(mx, &ex); frexpl(mf, &exf);
+            for (k = 0; k < 3; ++k) {
+                c[k] *= ld_pow2(-ex); cf[k] *= ld_pow2(-exf);
+                l2 += c[k] * c[k]; lf2 += cf[k] * cf[k];
+            }
+            l2 = sqrtl(l2); lf2 = sqrtl(lf2);
+        }
+        o = mist_normalize(v); of = mist_normalizef(vf);
+        ed = fabs((double)(o.x - c[0] / l2));
+        e = fabs((double)(o.y - c[1] / l2)); ed = e > ed ? e : ed;
+        e = fabs((double)(o.z - c[2] / l2)); ed = e > ed ? e : ed;
+        ef = fabs((double)(of.x - cf[0] / lf2));
+        e = fabs((double)(of.y - cf[1] / lf2)); ef = e > ef ? e : ef;
+        e = fabs((double)(of.z - cf[2] / lf2)); ef = e > ef ? e : ef;
+        badd += !(ed <= 4 * DBL_EPSILON);
+        badf += !(ef <= FLT_EPSILON);
+        worstd = ed > worstd ? ed : worstd;
+        worstf = ef > worstf ? ef : worstf;
+        /* control: the bare formula */
+        bd = 1 / sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        bf = 1 / sqrtf(vf.x * vf.x + vf.y * vf.y + vf.z * vf.z);
+        ctld += !(fabs((double)(v.x * bd - c[0] / l2)) <= 4 * DBL_EPSILON);
+        ctlf += !(fabs((double)(vf.x * bf - cf[0] / lf2)) <= FLT_EPSILON);
+    }
+    mt_check(badd == 0 && badf == 0, "mist_normalize within 4 eps, mist_normalizef within 1 "
+             "ulp of 1, of v/|v|: %ld and %ld of %ld fail (worst %.2f, %.2f eps)", badd, badf,
+             n, worstd / DBL_EPSILON, worstf / FLT_EPSILON);
+    mt_check(ctld > 0 && ctlf > 0, "control: the bare normalisation must fail somewhere "
+             "(%ld double, %ld float)", ctld, ctlf);
+    printf("test_domain: normalize worst %.2f eps (double), %.2f eps (float) over %ld vectors; "
+           "control %ld, %ld\n", worstd / DBL_EPSILON, worstf / FLT_EPSILON, n, ctld, ctlf);
+}
+
 static void test_fog(void)
 {
     mist_fog f = mist_fog_make(NAN, 3, -2, 1.5), h;
@@ -367,6 +438,7 @@ int main(void)
     test_alpha();
     test_u_xi();
     test_directions();
+    test_normalize();
     test_fog();
     test_sweep();
     test_hg_bits();
