@@ -1331,7 +1331,8 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* 4.5x the printed eq. 6 in float -> 86-87 with two residuals at the       */
 /* midpoints, 3.8-3.9x; with eq. 6 reordered (mist__draine_eq6) 76-78 ns,   */
 /* 3.5x; with mist__cbrt 68-69 ns, 3.1-3.2x; with one residual 46-48 ns,    */
-/* 2.2x.  In CUDA device code too (H200: 27.7 -> 16.7 ps a sample, README). */
+/* 2.2x; with that residual always inlined 42 ns, 2.0x.  In CUDA device     */
+/* code too (H200: 27.7 -> 16.7 ps a sample, README).                       */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
@@ -1442,6 +1443,37 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
     return it < n;                              /* exact hit (r = 0) */
 }
 
+/* The residual's sign at u for the rounding of mist__draine_round: > 0 when
+ * F_g(u) > xi (the root lies below u), < 0 when it lies above: the u <= 0
+ * form of mist__draine_newton, mirrored for xi > 1/2, r = S (F_g(u)
+ * - xi) with S = V cn (v1 + V) d > 0.  For a fixed u it is non-increasing
+ * in xi however it rounds (r = A - fl(xi B), B > 0), so decisions taken by
+ * it at one u are monotone in xi.  *sc (unless NULL): the sum of the
+ * magnitudes of its terms, so that its rounding error is below 32 eps sc (a
+ * few dozen roundings, each relative to a term: all factors are sums of
+ * non-negative terms but the one difference in Qp, whose two terms sc
+ * counts separately; inputs exact, or u any double: one more rounding, in
+ * 1 + u; measured in double against __float128 at 3e5 points near the
+ * roots of the certificate's domain: at most 8.2 eps sc).  *fs (unless
+ * NULL): S f V^2, f = F_g'(u) = (1 - g^2) w V^-3 / (2 cn), w = c0 + c1 u^2
+ * (r and fs: mist__draine_step's Newton step, u - r V^2 / fs). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_res)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
+                                                     MIST__T st, MIST__T *sc, MIST__T *fs)
+{
+    MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
+    MIST__T u = sg * st, gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;
+    MIST__T v2 = MIST__FN(mist__v2)(g, st), v = MIST__M(sqrt)(v2);
+    MIST__T v1 = MIST__C(1) + gg, omg = MIST__C(1) - gg, a = MIST__C(1) + g * g;
+    MIST__T cn = c0 + c1 * (a + g * g) / MIST__C(3);
+    MIST__T p = v * v1, pa = p + a, d = MIST__C(3) * pa * pa;
+    MIST__T q1 = (p + MIST__C(3) * a) * (v2 + a * u * u);
+    MIST__T q2 = u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * gg * u * v1);
+    MIST__T k = omg * (MIST__C(1) + u), b = x * (v * cn * ((v1 + v) * d));
+    if (sc) *sc = k * (c0 * d + c1 * (q1 + MIST__FN(mist__abs)(q2))) + b;
+    if (fs) *fs = MIST__C(0.5) * ((omg * v1) * (c0 + c1 * u * u)) * ((v1 + v) * d);
+    return sg * (k * (c0 * d + c1 * (q1 - q2)) - b);
+}
+
 /* The prepared sampler's common path: ONE Newton step from the table's
  * start st, straight-line (no branch on xi, so that independent samples
  * pipeline as eq. 6's straight-line code does), with an a-priori stop.
@@ -1462,49 +1494,14 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIS
     MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
     MIST__T u = sg * st, gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;
     MIST__T v2 = MIST__FN(mist__v2)(g, st), v = MIST__M(sqrt)(v2);   /* = V(gg, u) */
-    MIST__T v1 = MIST__C(1) + gg, omg = MIST__C(1) - gg, a = MIST__C(1) + g * g;
-    MIST__T omg2 = omg * v1, cn = c0 + c1 * (a + g * g) / MIST__C(3);
-    MIST__T wt = c0 + c1 * u * u, p = v * v1, pa = p + a, d = MIST__C(3) * pa * pa;
-    MIST__T qp = (p + MIST__C(3) * a) * (v2 + a * u * u)
-               - u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * gg * u * v1);
-    MIST__T dd = (v1 + v) * d, m = omg2 * wt;
-    MIST__T r = omg * (MIST__C(1) + u) * (c0 * d + c1 * qp) - x * (v * cn * dd);
-    MIST__T s = r * v2 / (MIST__C(0.5) * m * dd), un = u - s;   /* (F - x) / f */
+    MIST__T a = MIST__C(1) + g * g, cn = c0 + c1 * (a + g * g) / MIST__C(3);
+    MIST__T m = ((MIST__C(1) - gg) * (MIST__C(1) + gg)) * (c0 + c1 * u * u), fs, r, s, un;
+    r = sg * MIST__FN(mist__draine_res)(g, c0, c1, xi, st, (MIST__T *)0, &fs);   /* unmirrored */
+    s = r * v2 / fs; un = u - s;                                  /* (F - x) / f */
     *eb = kb * s * s;
     *ok = *eb * m <= tol * (MIST__FN(mist__abs)(un) * m
                             + MIST__C(2) * x * cn * v2 * v);
     return sg * un;
-}
-
-/* The residual's sign at u for the rounding of mist__draine_round: > 0 when
- * F_g(u) > xi (the root lies below u), < 0 when it lies above; r of
- * mist__draine_step (the u <= 0 form, mirrored for xi > 1/2): r = S (F_g(u)
- * - xi) with S = V cn (v1 + V) d > 0.  For a fixed u it is non-increasing
- * in xi however it rounds (r = A - fl(xi B), B > 0), so decisions taken by
- * it at one u are monotone in xi.  *sc (unless NULL): the sum of the
- * magnitudes of its terms, so that its rounding error is below 32 eps sc (a
- * few dozen roundings, each relative to a term: all factors are sums of
- * non-negative terms but the one difference in Qp, whose two terms sc
- * counts separately; inputs exact, or u any double: one more rounding, in
- * 1 + u; measured in double against __float128 at 3e5 points near the
- * roots of the certificate's domain: at most 8.2 eps sc).  *fs (unless
- * NULL): S f V^2, f = F_g'(u) = (1 - g^2) w V^-3 / (2 cn), w = c0 + c1 u^2
- * (the denominator of mist__draine_step's Newton step). */
-MIST__F MIST__T MIST__FN(mist__draine_res)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
-                                           MIST__T st, MIST__T *sc, MIST__T *fs)
-{
-    MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
-    MIST__T u = sg * st, gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;
-    MIST__T v2 = MIST__FN(mist__v2)(g, st), v = MIST__M(sqrt)(v2);
-    MIST__T v1 = MIST__C(1) + gg, omg = MIST__C(1) - gg, a = MIST__C(1) + g * g;
-    MIST__T cn = c0 + c1 * (a + g * g) / MIST__C(3);
-    MIST__T p = v * v1, pa = p + a, d = MIST__C(3) * pa * pa;
-    MIST__T q1 = (p + MIST__C(3) * a) * (v2 + a * u * u);
-    MIST__T q2 = u * v * (v * (v1 * v1 + MIST__C(3) * a) - MIST__C(2) * gg * u * v1);
-    MIST__T k = omg * (MIST__C(1) + u), b = x * (v * cn * ((v1 + v) * d));
-    if (sc) *sc = k * (c0 * d + c1 * (q1 + MIST__FN(mist__abs)(q2))) + b;
-    if (fs) *fs = MIST__C(0.5) * (omg * v1) * (c0 + c1 * u * u) * ((v1 + v) * d);
-    return sg * (k * (c0 * d + c1 * (q1 - q2)) - b);
 }
 
 /* kb of mist__draine_step for u in [lo, hi]: f = A w h with w = c0 + c1 u^2
@@ -3837,7 +3834,7 @@ MIST__F void MIST__FN(mist__seg_w)(MIST__T p, MIST__T q, MIST__T *w0, MIST__T *w
     e = MIST__M(exp)(-t1);
     if ((b < MIST__C(0) ? -b : b) <= MIST__EPS * MIST__EPS * p * p) {
         /* constant extinction (the t^2 term below eps^2 of the rest) */
-        m0 = -MIST__FN(mist__expm1)(-p) / p;
+        m0 = MIST__FN(mist__phi1)(p);                 /* (p = t1 > 2) */
         m1 = (m0 - MIST__M(exp)(-p)) / p;
     } else if (b > MIST__C(0)) {
         /* extinction rising: t = (x - x0)/sqrt(b) turns tau into x^2 - x0^2

@@ -452,7 +452,6 @@ static void test_near_one(void)
             }
 }
 
-/* The reported failures themselves (independent float128 values). */
 /* mist__cbrt (the start's cube root, eq. 6) against cbrtl in long double:
  * within 6 ulp (the header documents 4.6, measured over 2e7 arguments: a
  * degree-5 start and a third-order correction leave ~1e-19, the rest is
@@ -502,7 +501,7 @@ static void test_cbrt(void)
  * try's domain); xi uniform and crowded towards 0 and 1; u* in __float128
  * (tests/mist_ref.h).  Offered: u* in double (must be accepted, but for
  * the few u* within the certificate's margin of a midpoint: the floor is
- * 90%; 99.99% measured here), and ud that round to a float neighbour of the
+ * 90%; all 17848 measured here), and ud that round to a float neighbour of the
  * correctly rounded root: the neighbours themselves and the first doubles
  * beyond either midpoint (never accepted).  Negative control: the same
  * certificate with k = 4 instead of 0.7 (it then takes any ud within ~4h
@@ -548,6 +547,7 @@ static void test_cert(void)
            wrong_ctl, tried);
 }
 
+/* The reported failures themselves (independent float128 values). */
 static void test_issue2_points(void)
 {
     check_point(KIND_DRAINE, 0, 0x1p20, 0x1.fffffep-2);
