@@ -38,19 +38,20 @@
  *   Double is the plain name, float carries an 'f' suffix (as in libm).  Both
  *   come from ONE definition of each formula: the header includes itself once
  *   per type (see "The passes" below).  The float functions compute in float
- *   and finish the samplers in double, the double ones finish in long double
- *   where it is wider (x86): in the type alone they would miss the accuracy
- *   bar by up to 1.7x (measured; each sampler section says so).  Where long
- *   double is no wider than double (MSVC, ARM Macs, CUDA device code; or
- *   MIST_NO_LONG_DOUBLE) the double samplers run in double: HG and Rayleigh
+ *   and finish the samplers in double; in the type alone they would miss
+ *   the accuracy bar by up to 1.7x (measured; each sampler section says
+ *   so).  The double samplers finish in double-double where fma is one
+ *   instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or later, CUDA
+ *   device code), with or without long double: correctly rounded in
+ *   practice and monotone (the HG and Rayleigh batch forms vectorise).
+ *   Elsewhere they finish in long double where it is wider (x86 with gcc or
+ *   clang, the default build), with the same bar.  With neither (MSVC x64;
+ *   or MIST_NO_LONG_DOUBLE without fma) they run in double: HG and Rayleigh
  *   within the bar, Draine and Cornette-Shanks within 2x of it (6x for
  *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
  *   or two below the one before; tests/test_accuracy.c counts them, built as
- *   test_accuracy_nold).  Except the double HG and Rayleigh samplers where
- *   fma is one instruction (FP_FAST_FMA: ARM64, x86 with -march=haswell or
- *   later, CUDA device code): there they finish in double-double, correctly
- *   rounded in practice and monotone, with or without long double, and
- *   their batch forms vectorise.  Float is the same everywhere.  Run in CUDA
+ *   test_accuracy_nold; test_accuracy_nold_native is the fma build without
+ *   long double, held to the full bar).  Float is the same everywhere.  Run in CUDA
  *   device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90; tests/gpu/): every
  *   sampler within those bars, float samples bit for bit the host's, bad
  *   input answered as on the host; with --use_fast_math too, the fog
@@ -1314,13 +1315,24 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* successor), and the iteration in T is skipped.  The stop is judged with  */
 /* the density at the step's far end and a bound on f'/f over the whole     */
 /* step: near alpha -> inf and u = 0 the density is ~u^2 and f at the       */
-/* iterate alone stopped far from the root (issue 2).  Where long double is */
-/* no wider than double (MSVC, ARM Macs, CUDA device code) the double       */
-/* samplers skip the wide steps: within 2x the bar (1.75x measured) for     */
-/* alpha <= 1e4, up to 6x for alpha > 1e4, |g| <= 1e-3 and xi within a few  */
-/* ulps of F(0), where F is flat to third order (4.8x measured without fma, */
-/* 5.7x with fma and no other contraction, x86 -march=native -std=c99); and */
-/* not monotone in adjacent xi (tests/test_accuracy.c, test_accuracy_nold). */
+/* iterate alone stopped far from the root (issue 2).                       */
+/* DOUBLE-DOUBLE: where fma is one instruction the double samplers finish   */
+/* instead with Newton steps whose residual is the same formula in          */
+/* compensated arithmetic (mist__draine_resc: within 2^-101 of its terms'   */
+/* magnitude near the roots, measured against float128 over 1.6e6 points),  */
+/* rounded by a window and, where it straddles a midpoint, the residual's   */
+/* sign there (mist__draine_ddfin); long double remains the fallback where  */
+/* those steps do not settle in 64.  Correctly rounded in practice and      */
+/* monotone, with or without long double (test_accuracy_nold_native).       */
+/* mist_bench, mist_draine_sample (g .5, a 17): 132 ns (long double) -> 91  */
+/* (the residual as written) -> 86 (the step's divisions off its chain).    */
+/* Where there is neither (MSVC x64, or MIST_NO_LONG_DOUBLE without fma)    */
+/* the double samplers skip the wide steps: within 2x the bar (1.75x        */
+/* measured) for alpha <= 1e4, up to 6x for alpha > 1e4, |g| <= 1e-3 and xi */
+/* within a few ulps of F(0), where F is flat to third order (4.8x measured */
+/* without fma, 5.7x with fma and no other contraction, x86 -march=native   */
+/* -std=c99); and not monotone in adjacent xi (tests/test_accuracy.c,       */
+/* test_accuracy_nold).                                                     */
 /* The float sampler first rounds eq. 6's double answer to float and        */
 /* certifies it by one residual at that answer and the density there        */
 /* (mist__draine_cert): where the residual is certainly below half the      */
@@ -1525,6 +1537,172 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
 }
 #endif /* !MIST_NO_DRAINE */
 
+#if defined(MIST__DD) && !defined(MIST_NO_DRAINE)
+/* DOUBLE-DOUBLE FINISH (double where fma is one instruction; see "Draine
+ * and Cornette-Shanks: exact sampling").  Compensated arithmetic: a value
+ * is a pair h + l, l its error to first order (products' roundings by fma,
+ * sums' by two-sum; the products of two errors, ~eps^2 of the value, are
+ * dropped).  h + *l = (ah + al)(bh + bl): */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__cm)(MIST__T ah, MIST__T al, MIST__T bh, MIST__T bl,
+                                             MIST__T *l)
+{
+    MIST__T p = ah * bh;
+    *l = MIST__M(fma)(ah, bl, MIST__M(fma)(al, bh, MIST__M(fma)(ah, bh, -p)));
+    return p;
+}
+/* h + *l = a (bh + bl), a exact */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__cs)(MIST__T a, MIST__T bh, MIST__T bl, MIST__T *l)
+{
+    MIST__T p = a * bh;
+    *l = MIST__M(fma)(a, bl, MIST__M(fma)(a, bh, -p));
+    return p;
+}
+/* h + *l = (ah + al) + (bh + bl) */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__ca)(MIST__T ah, MIST__T al, MIST__T bh, MIST__T bl,
+                                             MIST__T *l)
+{
+    MIST__T e, s = MIST__FN(mist__two_sum)(ah, bh, &e);
+    *l = e + (al + bl);
+    return s;
+}
+
+/* mist__draine_res in compensated arithmetic, at u = uh + ul (a double, or
+ * the midpoint of two: |ul| <= ulp(uh) / 2), weights c0, c1 and g, xi
+ * exact: the same terms, each a pair.  Its error: ~2 eps^2 per operation
+ * relative to the operation's terms, all non-negative but the one
+ * difference in Qp, ~40 operations: below 2^-96 sc (*sc as in
+ * mist__draine_res), against 8 eps sc = 2^-50 sc in double.  *fs: S f V^2
+ * and *v2: V^2, in double. */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIST__T c1,
+                                                      MIST__T xi, MIST__T uh, MIST__T ul,
+                                                      MIST__T *sc, MIST__T *fs, MIST__T *v2)
+{
+    MIST__T sg = MIST__C(1) - MIST__C(2) * (MIST__T)(xi > MIST__C(0.5));  /* mirror: -1 */
+    MIST__T gg = sg * g, x = MIST__C(0.5) * (MIST__C(1) - sg) + sg * xi;  /* exact */
+    MIST__T ag = MIST__M(fabs)(g), sn = MIST__M(copysign)(MIST__C(1), g);
+    MIST__T oh, ol, th, tl, wh, wl, vh, vl, v1h, v1l, mh, ml, g2h, g2l, ah, al, nh, nl, qh, ql;
+    MIST__T cnh, cnl, ph, pl, dh, dl, a3h, a3l, eh, el, zh, zl, q1h, q1l, q2h, q2l, kh, kl;
+    MIST__T bh, bl;
+    /* V^2 = (1 - |g|)^2 + 2 |g| (1 - sgn(g) u) at the unmirrored u (mist__v2) */
+    oh = MIST__FN(mist__fast_two_sum)(MIST__C(1), -ag, &ol);
+    oh = MIST__FN(mist__cm)(oh, ol, oh, ol, &ol);
+    th = MIST__FN(mist__fast_two_sum)(MIST__C(1), -sn * uh, &tl);
+    th = MIST__FN(mist__fast_two_sum)(th, tl - sn * ul, &tl);   /* renormalised: */
+    /* near u = sgn(g) ul is no first-order term beside 1 - sgn(g) u (the
+     * square root's first-order low part then erred by 1e-7 relative) */
+    th = MIST__FN(mist__cs)(MIST__C(2) * ag, th, tl, &tl);
+    wh = MIST__FN(mist__ca)(oh, ol, th, tl, &wl);
+    *v2 = wh;
+    vh = MIST__M(sqrt)(wh);                                           /* V */
+    vl = (MIST__M(fma)(-vh, vh, wh) + wl) / (MIST__C(2) * vh);
+    uh *= sg; ul *= sg;                                               /* mirrored */
+    v1h = MIST__FN(mist__fast_two_sum)(MIST__C(1), gg, &v1l);         /* 1 + gg */
+    mh = MIST__FN(mist__fast_two_sum)(MIST__C(1), -gg, &ml);          /* 1 - gg */
+    g2h = MIST__FN(mist__two_prod)(g, g, &g2l);
+    ah = MIST__FN(mist__fast_two_sum)(MIST__C(1), g2h, &al);          /* a = 1 + g^2 */
+    al += g2l;
+    nh = MIST__FN(mist__fast_two_sum)(MIST__C(1), MIST__C(2) * g2h, &nl);
+    nl += MIST__C(2) * g2l;                                           /* 1 + 2 g^2 */
+    qh = nh / MIST__C(3);
+    ql = (MIST__M(fma)(-qh, MIST__C(3), nh) + nl) / MIST__C(3);
+    qh = MIST__FN(mist__cs)(c1, qh, ql, &ql);
+    cnh = MIST__FN(mist__ca)(c0, MIST__C(0), qh, ql, &cnl);          /* cn */
+    ph = MIST__FN(mist__cm)(vh, vl, v1h, v1l, &pl);                   /* P = V v1 */
+    dh = MIST__FN(mist__ca)(ph, pl, ah, al, &dl);                     /* P + a */
+    dh = MIST__FN(mist__cm)(dh, dl, dh, dl, &dl);
+    dh = MIST__FN(mist__cs)(MIST__C(3), dh, dl, &dl);                 /* d */
+    a3h = MIST__FN(mist__cs)(MIST__C(3), ah, al, &a3l);               /* 3a */
+    eh = MIST__FN(mist__ca)(ph, pl, a3h, a3l, &el);                   /* P + 3a */
+    zh = MIST__FN(mist__cm)(uh, ul, uh, ul, &zl);                     /* u^2 */
+    zh = MIST__FN(mist__cm)(ah, al, zh, zl, &zl);
+    zh = MIST__FN(mist__ca)(wh, wl, zh, zl, &zl);                     /* V^2 + a u^2 */
+    q1h = MIST__FN(mist__cm)(eh, el, zh, zl, &q1l);
+    eh = MIST__FN(mist__cm)(v1h, v1l, v1h, v1l, &el);                 /* v1^2 */
+    eh = MIST__FN(mist__ca)(eh, el, a3h, a3l, &el);
+    eh = MIST__FN(mist__cm)(vh, vl, eh, el, &el);                     /* V (v1^2 + 3a) */
+    zh = MIST__FN(mist__cm)(uh, ul, v1h, v1l, &zl);
+    zh = MIST__FN(mist__cs)(MIST__C(-2) * gg, zh, zl, &zl);           /* -2 gg u v1 */
+    eh = MIST__FN(mist__ca)(eh, el, zh, zl, &el);
+    zh = MIST__FN(mist__cm)(uh, ul, vh, vl, &zl);                     /* u V */
+    q2h = MIST__FN(mist__cm)(zh, zl, eh, el, &q2l);
+    kh = MIST__FN(mist__fast_two_sum)(MIST__C(1), uh, &kl);           /* 1 + u */
+    kh = MIST__FN(mist__fast_two_sum)(kh, kl + ul, &kl);
+    kh = MIST__FN(mist__cm)(mh, ml, kh, kl, &kl);                     /* k */
+    eh = MIST__FN(mist__ca)(q1h, q1l, -q2h, -q2l, &el);               /* Qp */
+    eh = MIST__FN(mist__cs)(c1, eh, el, &el);
+    zh = MIST__FN(mist__cs)(c0, dh, dl, &zl);
+    eh = MIST__FN(mist__ca)(zh, zl, eh, el, &el);
+    eh = MIST__FN(mist__cm)(kh, kl, eh, el, &el);                     /* A = S F */
+    bh = MIST__FN(mist__ca)(v1h, v1l, vh, vl, &bl);
+    bh = MIST__FN(mist__cm)(bh, bl, dh, dl, &bl);
+    bh = MIST__FN(mist__cm)(cnh, cnl, bh, bl, &bl);
+    bh = MIST__FN(mist__cm)(vh, vl, bh, bl, &bl);
+    bh = MIST__FN(mist__cs)(x, bh, bl, &bl);                          /* B = S x */
+    *sc = kh * (c0 * dh + c1 * (q1h + MIST__M(fabs)(q2h))) + bh;
+    *fs = MIST__C(0.5) * (mh * v1h) * (c0 + c1 * uh * uh) * ((v1h + vh) * dh);
+    return sg * ((eh - bh) + (el - bl));
+}
+
+/* The root of F_g(u) = xi (sanitised |g| < 1, weights c0, c1 exact and
+ * finite, xi in (0, 1)) from a double u near it, by Newton steps with the
+ * compensated residual: 1 with the sample in *out, else 0 (not settled in
+ * 64 steps: the caller goes on as without it).  Steps that leave the
+ * bracket the residual's signs keep bisect it.  A step
+ * s = r / f lands on uw = u - s, exact as the pair (uh, ul); its error is
+ * bounded by e = 2.5 K s^2 (Newton's, with K >= |f'/f| over u +- 2|s|,
+ * which holds the root: there w = c0 + c1 u^2 stays within wt/4 of its
+ * value at u and V^2 within V^2/6, so f within [0.59, 1.65] f(u) and
+ * e <= max|f'| f(u) s^2 / (2 min f^2) <= 2.32 K s^2) plus the residual's
+ * error over f (2^-90 sc / f) and the step's own rounding (2^-48 |s|).
+ * Then: uw - e and uw + e round alike: that is the root correctly rounded;
+ * or they round to adjacent doubles: the compensated residual's sign at
+ * their midpoint picks one (as mist__draine_pick: monotone in xi at a
+ * fixed point); or e <= eps/8 xi / f (near u = 0 at large alpha, where
+ * the bar's xi term is the larger): uw rounded, within the bar and
+ * monotone in xi (adjacent xi move the root by >= eps xi / f, 4x the two
+ * errors).  Else another step from uh. */
+MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
+                                         MIST__T u, MIST__T *out)
+{
+    MIST__T ag = MIST__M(fabs)(g), r, sc, fs, v2, iv, iw, s, as, au, wt, e, uh, ul, lo, hi, ew;
+    MIST__T bl = MIST__C(-1), bh = MIST__C(1);
+    int it;
+    for (it = 0; it < MIST__MAXIT; ++it) {
+        r = MIST__FN(mist__draine_resc)(g, c0, c1, xi, u, MIST__C(0), &sc, &fs, &v2);
+        iv = v2 / fs;                     /* 1 / (S f): with the hi parts, before r */
+        s = r * iv;                                       /* (F - xi) / f */
+        if (!(MIST__M(fabs)(r) > MIST__C(8.077935669463161e-28) * sc)) {   /* 2^-90 */
+            *out = u;                 /* the root, within the residual's error */
+            return r == r;            /* (NaN: 0) */
+        }
+        as = MIST__M(fabs)(s); au = MIST__M(fabs)(u); wt = c0 + c1 * u * u;
+        iw = MIST__C(1) / wt;
+        bh = r > MIST__C(0) ? u : bh;                     /* the bracket */
+        bl = r < MIST__C(0) ? u : bl;
+        uh = MIST__FN(mist__two_sum)(u, -s, &ul);
+        if (MIST__C(16) * c1 * as * (au + as) <= wt && MIST__C(24) * ag * as <= v2) {
+            MIST__T k = MIST__C(3.6) * ag / v2 + MIST__C(2.67) * c1 * (au + MIST__C(2) * as) * iw;
+            e = MIST__C(2.5) * k * s * s + (MIST__C(8.077935669463161e-28) * sc * iv  /* 2^-90 */
+                + MIST__C(3.552713678800501e-15) * as);                         /* 2^-48 */
+            ew = MIST__C(1.01) * e + MIST__C(8.881784197001252e-16) * MIST__M(fabs)(ul); /* 2^-50 */
+            lo = uh + (ul - ew); hi = uh + (ul + ew);
+            if (lo == hi) { *out = lo; return 1; }
+            if (e <= MIST__C(3.469446951953614e-18) * sc * iv) {              /* 2^-58 */
+                *out = uh; return 1;
+            }
+            if (MIST__M(nextafter)(lo, MIST__C(2)) == hi) {
+                r = MIST__FN(mist__draine_resc)(g, c0, c1, xi, lo, MIST__C(0.5) * (hi - lo),
+                                                &sc, &fs, &v2);
+                *out = r > MIST__C(0) ? lo : hi;
+                return 1;
+            }
+        }
+        u = uh > bl && uh < bh ? uh : MIST__C(0.5) * (bl + bh);   /* else bisect */
+    }
+    return 0;
+}
+#endif
+
 #ifndef MIST__INTERNAL_ONLY
 #ifndef MIST_NO_DRAINE
 #ifdef MIST__W
@@ -1583,6 +1761,9 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
 #ifdef MIST__W
     MIST__W uw, c0w, c1w, t0w = 0;
 #endif
+#if defined(MIST__DD)
+    MIST__T c0d, c1d;
+#endif
     if (!(x > MIST__C(0))) return MIST__C(-1);
     /* The start (good: 1 the table's, 2 eq. 6, 0 none): the prepared
      * table's; else [JD23 eq. 6] in double, which lands within 1.3e-5 of
@@ -1602,6 +1783,13 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
         st = (MIST__T)ud;
     }
     if (!good) st = MIST__FN(mist__hg_sample)(g, x);
+#if defined(MIST__DD)
+    /* double where fma is one instruction: the compensated finish, with
+     * the weights (1, alpha), exact, while they cannot overflow */
+    c0d = alpha <= MIST__C(1e270) ? MIST__C(1) : c0;
+    c1d = alpha <= MIST__C(1e270) ? alpha : c1;
+    if (good == 2 && MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, st, &u)) return u;
+#endif
 #ifdef MIST__W
     MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
     if (f0) t0w = ((MIST__W)f0[0] - (MIST__W)x) + (MIST__W)f0[1];
@@ -1625,6 +1813,9 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     u = st;
     MIST__FN(mist__draine_newton)(g, c0, c1, x, t0, f0 != 0, MIST__C(16) * MIST__EPS,
                                   MIST__MAXIT, &u);
+#if defined(MIST__DD)
+    if (MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, u, &st)) return st;
+#endif
 #ifdef MIST__W
     uw = u;
     MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
@@ -1664,31 +1855,41 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 {
     int j;
     *st = MIST__FN(mist__phase_start)(tab, xi, &j);
-#ifdef MIST__W
+#if defined(MIST__W) || defined(MIST__DD)
     {   /* no branch on xi (see mist__draine_step); a second step only from
          * inside [u_j, u_j+1], kb's range.  Double: first one step in T (long
-         * double is slow). */
-        int ok, k;
-        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut;
-        MIST__W uw = *st, eb;               /* weights (1, alpha): exact */
+         * double is slow), then where fma is one instruction the compensated
+         * finish (mist__draine_ddfin), else the wide steps. */
+        int ok;
+        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = *st;
         kb = tab[2 * MIST__PHASE_K + 2 + j];
         if (MIST__EPS < 1e-10) {
             MIST__T et;
             ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, *st, kb,
                                              MIST__C(0), &ok, &et);
-            if (ut >= tab[j] && ut <= tab[j + 1]) uw = ut;
+            if (ut >= tab[j] && ut <= tab[j + 1]) us = ut;
         }
-        for (k = 0; k < 2; ++k) {
-            uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
-                ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
-                (MIST__W)MIST__EPS / 64, &ok, &eb);
-            if (ok) {
-                *u = MIST__FN(mist__draine_round)(g, (MIST__W)fin, fin > 0 ? (MIST__W)alpha
-                    : 1, xi, MIST__WFN(mist__clamp11)(uw), MIST__FN(mist__draine_win)(uw, eb));
-                return 1;
+#if defined(MIST__DD)
+        if (MIST__FN(mist__draine_ddfin)(g, fin, fin > 0 ? alpha : 1, xi, us, u)) return 1;
+#endif
+#ifdef MIST__W
+        {
+            MIST__W uw = us, eb;            /* weights (1, alpha): exact */
+            int k;
+            for (k = 0; k < 2; ++k) {
+                uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
+                    ? (MIST__W)alpha : 1, (MIST__W)xi, uw, (MIST__W)kb,
+                    (MIST__W)MIST__EPS / 64, &ok, &eb);
+                if (ok) {
+                    *u = MIST__FN(mist__draine_round)(g, (MIST__W)fin, fin > 0
+                        ? (MIST__W)alpha : 1, xi, MIST__WFN(mist__clamp11)(uw),
+                        MIST__FN(mist__draine_win)(uw, eb));
+                    return 1;
+                }
+                if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
             }
-            if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
         }
+#endif
     }
 #else
     (void)g; (void)alpha; (void)u;
