@@ -1,13 +1,14 @@
 /* mist_ddcheck.c - the figures README.md and include/mist.h give for the
- * double HG and Rayleigh samplers in double-double (where fma is one
+ * double HG, Rayleigh and Draine samplers in double-double (where fma is one
  * instruction; CMake builds this with the benchmark's flags, so on x86 with
  * -march=native): over 1e5 random (g, xi) for HG (g from 1e-300 to
- * 1 - 2^-53 in magnitude, xi down to 2^-1074) and 2e4 random xi for
- * Rayleigh, the worst error against the bar of tests/test_accuracy.c, how
- * many samples equal the float128 root rounded to double, and how many
- * adjacent xi pairs come out reversed.  Prints which arithmetic the build
- * uses.  Run: ./build/mist_ddcheck  (~40 s: the Rayleigh reference integrates
- * in float128). */
+ * 1 - 2^-53 in magnitude, xi down to 2^-1074), 2e4 random xi for Rayleigh
+ * and 2e4 random (g, alpha, xi) for Draine (g as HG's, alpha log-uniform
+ * over [1e-6, 1e30]), the worst error against the bar of
+ * tests/test_accuracy.c, how many samples equal the float128 root rounded
+ * to double, and how many adjacent xi pairs come out reversed.  Prints which
+ * arithmetic the build uses.  Run: ./build/mist_ddcheck  (~1 min: the
+ * Rayleigh reference integrates in float128). */
 #include "mist.h"
 #include "mist_ref.h"
 
@@ -17,41 +18,50 @@
 static uint64_t s_ = 88172645463325252ull;
 static double rnd(void) { s_ ^= s_ << 13; s_ ^= s_ >> 7; s_ ^= s_ << 17; return (s_ >> 11) * 0x1p-53; }
 
-/* one sampler (kind 0 HG, 1 Rayleigh) at (g, xi): tallies */
-static void check(int kind, double g, double xi, double *worst, long *exact, long *rev)
+/* one sampler (kind 0 HG, 1 Rayleigh, 2 Draine) at (g, alpha, xi) */
+static double sample(int kind, double g, double a, double xi)
 {
-    double u = kind ? mist_rayleigh_sample(xi) : mist_hg_sample(g, xi), x2 = nextafter(xi, 2);
-    qreal rg = kind ? 0 : g, ra = kind ? 1 : 0;
+    return kind == 0 ? mist_hg_sample(g, xi) : kind == 1 ? mist_rayleigh_sample(xi)
+                     : mist_draine_sample(g, a, xi);
+}
+
+/* its tallies */
+static void check(int kind, double g, double a, double xi, double *worst, long *exact,
+                  long *rev)
+{
+    double u = sample(kind, g, a, xi), x2 = nextafter(xi, 2);
+    qreal rg = kind == 1 ? 0 : g, ra = kind == 0 ? 0 : kind == 1 ? 1 : a;
     double us, r = ref_bar((double)rg, ra, xi, u, 0, &us);
     if (r > *worst) *worst = r;
     *exact += u == us;
-    if (x2 <= 1 && (kind ? mist_rayleigh_sample(x2) : mist_hg_sample(g, x2)) < u) ++*rev;
+    if (x2 <= 1 && sample(kind, g, a, x2) < u) ++*rev;
 }
 
 int main(void)
 {
-    long k, n[2] = { 100000, 20000 }, exact[2] = { 0, 0 }, rev[2] = { 0, 0 };
-    double worst[2] = { 0, 0 };
+    static const char *name[3] = { "mist_hg_sample", "mist_rayleigh_sample",
+                                    "mist_draine_sample" };
+    long k, n[3] = { 100000, 20000, 20000 }, exact[3] = { 0, 0, 0 }, rev[3] = { 0, 0, 0 };
+    double worst[3] = { 0, 0, 0 };
     int kind;
 #if defined(FP_FAST_FMA)
-    printf("double HG and Rayleigh samplers: double-double (FP_FAST_FMA)\n");
+    printf("double HG, Rayleigh and Draine samplers: double-double (FP_FAST_FMA)\n");
 #else
-    printf("double HG and Rayleigh samplers: long double or double (no FP_FAST_FMA)\n");
+    printf("double HG, Rayleigh and Draine samplers: long double or double (no FP_FAST_FMA)\n");
 #endif
-    for (kind = 0; kind < 2; ++kind)
+    for (kind = 0; kind < 3; ++kind)
         for (k = 0; k < n[kind]; ++k) {
             int c = (int)(k % 5);
             double g = c == 0 ? pow(10, -300 * rnd()) : c == 1 ? 1 - pow(2, -53 * rnd()) : rnd();
-            double xi = rnd();
+            double a = pow(10, -6 + 36 * rnd()), xi = rnd();
             g = rnd() < 0.5 ? -g : g;
             if (k % 3 == 1) xi = pow(xi, 40);
             else if (k % 3 == 2) xi = 1 - pow(xi, 8);
             if (k % 7 == 0) xi = ldexp(1, -(int)(1074 * rnd()));
-            check(kind, g, xi, &worst[kind], &exact[kind], &rev[kind]);
+            check(kind, g, a, xi, &worst[kind], &exact[kind], &rev[kind]);
         }
-    for (kind = 0; kind < 2; ++kind)
+    for (kind = 0; kind < 3; ++kind)
         printf("%s: worst %.3g of the bar; %ld of %ld the rounded root; %ld reversed adjacent "
-               "pairs\n", kind ? "mist_rayleigh_sample" : "mist_hg_sample", worst[kind],
-               exact[kind], n[kind], rev[kind]);
+               "pairs\n", name[kind], worst[kind], exact[kind], n[kind], rev[kind]);
     return 0;
 }

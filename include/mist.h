@@ -1648,7 +1648,13 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
  * finite, xi in (0, 1)) from a double u near it, by Newton steps with the
  * compensated residual: 1 with the sample in *out, else 0 (not settled in
  * 64 steps: the caller goes on as without it).  Steps that leave the
- * bracket the residual's signs keep bisect it.  A step
+ * bracket the residual's signs keep bisect it; a step that rounds back to
+ * u (where the model is not trusted: V^2 varies fast next to u = +-1 for
+ * |g| -> 1) probes the neighbour; a bracket of two adjacent doubles is
+ * decided by the residual's sign at their midpoint (the root next to +-1
+ * within an ulp: those steps had bisected from [-1, 1] and stalled there,
+ * 11 of 2e4 random samples an ulp off without long double, measured with
+ * bench/mist_ddcheck.c).  A step
  * s = r / f lands on uw = u - s, exact as the pair (uh, ul); its error is
  * bounded by e = 2.5 K s^2 (Newton's, with K >= |f'/f| over u +- 2|s|,
  * which holds the root: there w = c0 + c1 u^2 stays within wt/4 of its
@@ -1698,6 +1704,14 @@ MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST
                 return 1;
             }
         }
+        if (MIST__M(nextafter)(bl, MIST__C(2)) == bh) {   /* the root between two */
+            r = MIST__FN(mist__draine_resc)(g, c0, c1, xi, bl, MIST__C(0.5) * (bh - bl),
+                                            &sc, &fs, &v2);  /* adjacent doubles */
+            *out = r > MIST__C(0) ? bl : bh;
+            return 1;
+        }
+        if (uh == u)                      /* a step below half an ulp: the neighbour */
+            uh = MIST__M(nextafter)(u, s > MIST__C(0) ? MIST__C(-2) : MIST__C(2));
         u = uh > bl && uh < bh ? uh : MIST__C(0.5) * (bl + bh);   /* else bisect */
     }
     return 0;
