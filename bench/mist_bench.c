@@ -549,7 +549,12 @@ static void batch_rows(void)
     row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
     row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
                 b_phase_draine_samplef);
-    row_speedup("mist_phase_sample_n  (loop)", n_phase_dr_sample, b_phase_draine_sample);
+#if defined(FP_FAST_FMA)
+    row_speedup("mist_phase_sample_n  (Draine, double-double)", n_phase_dr_sample,
+                b_phase_draine_sample);
+#else
+    row_speedup("mist_phase_sample_n  (Draine, loop)", n_phase_dr_sample, b_phase_draine_sample);
+#endif
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf", n_rayleigh_samplef, b_rayleigh_samplef);
