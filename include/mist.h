@@ -1022,13 +1022,14 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* Float takes one step from a better start instead (mist__rayleigh_v).     */
 /* Double evaluates it in long double, float in double (as HG).  Where fma  */
 /* is one instruction (as HG) double finishes in double-double instead: one */
-/* Newton step on the residual by compensated Horner with fma, u = v - 1    */
-/* summed exactly (mist__rayleigh_udd; bench/mist_ddcheck.c: 19995 of 2e4  */
-/* random xi, down to 2^-1074, the rounded float128 root, 0 reversed; batch */
-/* form vectorises; scalar 1.17x the long double version, measured side by  */
-/* side: the compensated Horner is a chain).  Without either, double in     */
-/* double: within the bar (test_accuracy_nold) but not monotone in adjacent */
-/* xi.                                                                      */
+/* Newton step on the residual by compensated Horner with fma from the      */
+/* float samplers' start (one Halley step), u = v - 1 summed exactly        */
+/* (mist__rayleigh_udd; bench/mist_ddcheck.c: 19998 of 2e4 random xi, down  */
+/* to 2^-1074, the rounded float128 root, 0 reversed; batch form            */
+/* vectorises; scalar 13.0 ns against 19.8 with the two-step start, 1.17x   */
+/* the long double version before that, measured side by side: the          */
+/* compensated Horner is a chain).  Without either, double in double:       */
+/* within the bar (test_accuracy_nold) but not monotone in adjacent xi.     */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2].  fl (the float
@@ -1039,7 +1040,12 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
  * left one step 2^-52 short).  That form's error is absolute (~4 eps),
  * harmless for a float u = v - 1 but not for double near u = -1, where v
  * is tiny and the first form's error is relative to v (the double samplers
- * keep it: with the other, 10 reversals in test_accuracy's runs there).
+ * keep it: with the other, 10 reversals in test_accuracy's runs there),
+ * except in double-double, whose Newton step on the exact residual makes
+ * an absolute start error of ~4 eps ~1e-31 (mist__rayleigh_udd starts
+ * here since the fourth session of 2026-11-27: the same samples over 2e7
+ * random xi, crowded to 0 and 1, against the two-step start; mist_bench
+ * 19.8 -> 13.0 ns, its batch 4.74 -> 3.30 ns an element).
  * Float: every 7th float xi in [0, 1] gives the same sample as the two-step
  * form (1.5e8), no reversal over all floats in [1/2, 1]; 0.80x the time of
  * mist_rayleigh_samplef (one-off A/B harness). */
@@ -1084,7 +1090,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_udd)(MIST__T xi)
 {
     MIST__T y = MIST__C(1) - xi, x = xi < y ? xi : y;
     MIST__T sg = xi > MIST__C(0.5) ? MIST__C(-1) : MIST__C(1);
-    MIST__T v = MIST__FN(mist__rayleigh_v)(x, 0), s, p, e, c, d;
+    MIST__T v = MIST__FN(mist__rayleigh_v)(x, 1), s, p, e, c, d;
     s = MIST__FN(mist__fast_two_sum)(MIST__C(-3), v, &c);           /* v - 3 */
     p = MIST__FN(mist__two_prod)(s, v, &e);                          /* times v, + 6 */
     s = MIST__FN(mist__fast_two_sum)(MIST__C(6), p, &d);
