@@ -2852,12 +2852,13 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         MIST__FN(mist_hg_sample_n)(p->g_hg, in, out, n);
         return;
     }
-#if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
+#if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DD))
     if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
         && p->g > MIST__C(-1) && p->g < MIST__C(1)) {
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1;
         const MIST__T *tab = p->tab;
+#if defined(MIST__W_EXACT)
         MIST__W gw = (MIST__W)p->g, fin = p->alpha < (MIST__T)INFINITY ? 1 : 0;
         MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
         MIST__W u1[MIST__BLK], e1[MIST__BLK];
@@ -2891,19 +2892,12 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                 if (++q.m == MIST__BLK) MIST__FN(mist__phase_finish)(p, gw, fin, aw, &q, out);
             })
         if (q.m) MIST__FN(mist__phase_finish)(p, gw, fin, aw, &q, out);
-        return;
-    }
-#elif defined(MIST__DD) && !defined(MIST_NO_DRAINE)
-    /* double where fma is one instruction: the scalar sampler's first steps
-     * (mist__phase_try: the table's start, one step in double, one
-     * compensated step, mist__draine_dd1) straight-line over a block; the
-     * elements that step does not settle take the scalar function, which
-     * repeats those steps: the same values bit for bit */
-    if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
-        && p->g > MIST__C(-1) && p->g < MIST__C(1)) {
-        volatile MIST__T z0 = 0;
-        MIST__T z = z0, one = z + 1;
-        const MIST__T *tab = p->tab;
+#else
+        /* double where fma is one instruction: the scalar sampler's first
+         * steps (mist__phase_try: the table's start, one step in double, one
+         * compensated step, mist__draine_dd1) straight-line over a block;
+         * the elements that step does not settle take the scalar function,
+         * which repeats those steps: the same values bit for bit */
         MIST__T g = p->g, fin = p->alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
         MIST__T a = fin > MIST__C(0) ? p->alpha : MIST__C(1);
         MIST__BLOCKS_FB(
@@ -2920,6 +2914,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             y_[j_] = u;,
             1,
             out[i_ + j_] = MIST__FN(mist_phase_sample)(p, x_[j_]);)
+#endif
         return;
     }
 #endif
