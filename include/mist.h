@@ -51,11 +51,13 @@
  *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
  *   or two below the one before; tests/test_accuracy.c counts them, built as
  *   test_accuracy_nold; test_accuracy_nold_native is the fma build without
- *   long double, held to the full bar).  Float is the same everywhere.  Run in CUDA
- *   device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90; tests/gpu/): every
- *   sampler within those bars, float samples bit for bit the host's, bad
- *   input answered as on the host; with --use_fast_math too, the fog
- *   mixture's float remap of xi then an ulp or two off (README "On a GPU").
+ *   long double, held to the full bar).  Float is the same everywhere.  Run
+ *   in CUDA device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90;
+ *   tests/gpu/; before the double Draine samplers took double-double, not
+ *   yet run on a GPU since): every sampler within those bars, float
+ *   samples bit for bit the host's, bad input answered as on the host; with
+ *   --use_fast_math too, the fog mixture's float remap of xi then an ulp or
+ *   two off (README "On a GPU").
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
@@ -1696,8 +1698,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
  * decided by the residual's sign at their midpoint (the root next to +-1
  * within an ulp: those steps had bisected from [-1, 1] and stalled there,
  * 11 of 2e4 random samples an ulp off without long double, measured with
- * bench/mist_ddcheck.c).  A step
- * s = r / f lands on uw = u - s, exact as the pair (uh, ul); its error is
+ * bench/mist_ddcheck.c).  A step s = r / f lands on uw = u - s, exact as
+ * the pair (uh, ul); its error is
  * bounded by e = 2.5 K s^2 (Newton's, with K >= |f'/f| over u +- 2|s|,
  * which holds the root: there w = c0 + c1 u^2 stays within wt/4 of its
  * value at u and V^2 within V^2/6, so f within [0.59, 1.65] f(u) and
@@ -1883,8 +1885,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__
 /* The prepared sampler's first try at sanitised |g| < 1, alpha, c1 != 0, xi
  * in [0, 1]: *st, the start from tab (u at xi = j/K, then the slopes du/dxi
  * / K, then the step bounds): cubic Hermite; returns 1 with the sample in
- * *u where wide Newton steps with an a-priori stop (mist__draine_step)
- * finish it, else 0 (the caller goes on from *st: mist__draine_finish). */
+ * *u where the compensated finish (double where fma is one instruction:
+ * mist__draine_ddfin) or wide Newton steps with an a-priori stop
+ * (mist__draine_step) finish it, else 0 (the caller goes on from *st:
+ * mist__draine_finish). */
 MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const MIST__T *tab,
                                                 MIST__T xi, MIST__T *st, MIST__T *u)
 {
