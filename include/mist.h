@@ -2832,22 +2832,23 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
 
 /* Prepared sample of each in[i] = xi: mist_phase_sample(p, xi).  HG as
  * mist_hg_sample_n; in double where fma is one instruction, Draine and
- * Cornette-Shanks vectorised as said below the float code (./build/
- * mist_bench, g .5, alpha 17: 69 -> 18.5 ns a sample, 4.2x the scalar loop;
- * the vectorised step was a branch in gcc's eyes until mist__draine_dd1
- * took its selects apart); in float, Draine and Cornette-Shanks vectorised: the
+ * Cornette-Shanks vectorised as said below the float code
+ * (./build/mist_bench, g .5, alpha 17: 69 -> 18.5 ns a sample, 4.2x the
+ * scalar loop, 4.4x with the pending elements finished from their step; the
+ * vectorised step was a branch in gcc's eyes until mist__draine_dd1 took
+ * its selects apart); in float, Draine and Cornette-Shanks vectorised: the
  * start table and one straight-line Newton step in double
  * (mist__draine_step) for a block; the elements that step did not finish
  * (4-5% at alpha 17: the table intervals around u = 0) wait in a pending
- * block, which is finished by the same second step and rounding in
- * another straight-line pass (mist__phase_finish); only what falls out of
- * both (no table interval, no converged step) takes the scalar function.
- * Before the pending pass those elements took the scalar function, ~86 ns
- * each: 38% of the batch's time.  ./build/mist_bench (gcc 12 -O3
- * -march=native -fno-math-errno, AVX-512, n = 4096, g .5, alpha 17, three
- * runs): 7.9-8.1 ns a sample, 3.9x the scalar loop (2.6-2.9x before);
- * at g .1, alpha 250 a third of the pending elements still need the scalar
- * function (their second step misses too). */
+ * block, which is finished by the same second step and rounding in another
+ * straight-line pass (mist__phase_finish); only what falls out of both (no
+ * table interval, no converged step) takes the scalar function. Before the
+ * pending pass those elements took the scalar function, ~86 ns each: 38% of
+ * the batch's time.  ./build/mist_bench (gcc 12 -O3 -march=native
+ * -fno-math-errno, AVX-512, n = 4096, g .5, alpha 17, three runs): 7.9-8.1
+ * ns a sample, 3.9x the scalar loop (2.6-2.9x before); at g .1, alpha 250 a
+ * third of the pending elements still need the scalar function (their
+ * second step misses too). */
 MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
                                            MIST__T *out, size_t n)
 {
@@ -2900,10 +2901,12 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         /* double where fma is one instruction: the scalar sampler's first
          * steps (mist__phase_try: the table's start, one step in double, one
          * compensated step, mist__draine_dd1) straight-line over a block;
-         * the elements that step does not settle take the scalar function,
-         * which repeats those steps: the same values bit for bit */
+         * the elements that step does not settle continue as the scalar
+         * sampler does from there (mist__draine_ddfin, which repeats that
+         * step, else the whole scalar function): the same values bit for
+         * bit */
         MIST__T g = p->g, fin = p->alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
-        MIST__T a = fin > MIST__C(0) ? p->alpha : MIST__C(1);
+        MIST__T a = fin > MIST__C(0) ? p->alpha : MIST__C(1), us_[MIST__BLK];
         MIST__BLOCKS_FB(
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
             MIST__T st; MIST__T ut; MIST__T et; MIST__T r; MIST__T s; MIST__T uh;
@@ -2913,11 +2916,15 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             ut = MIST__FN(mist__draine_step)(g, fin, a, xi, st, tab[2 * MIST__PHASE_K + 2 + k],
                                              MIST__C(0), &ok, &et);
             ut = (ut >= tab[k]) & (ut <= tab[k + 1]) ? ut : st;   /* (no branch) */
+            us_[j_] = ut;
             f_[j_] = (unsigned char)(MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
                                                                 &uh, &lo, &hi) != 1);
             y_[j_] = u;,
             1,
-            out[i_ + j_] = MIST__FN(mist_phase_sample)(p, x_[j_]);)
+            MIST__T u;                    /* the scalar sampler's finish from there */
+            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+            out[i_ + j_] = MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
+                           : MIST__FN(mist_phase_sample)(p, x_[j_]);)
 #endif
         return;
     }
