@@ -7,7 +7,7 @@
  * over [1e-6, 1e30]), the worst error against the bar of
  * tests/test_accuracy.c, how many samples equal the float128 root rounded
  * to double, and how many adjacent xi pairs come out reversed.  Prints which
- * arithmetic the build uses.  Run: ./build/mist_ddcheck  (~1 min: the
+ * arithmetic the build uses.  Run: ./build/mist_ddcheck  (~20 s: the
  * Rayleigh reference integrates in float128). */
 #include "mist.h"
 #include "mist_ref.h"

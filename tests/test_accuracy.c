@@ -11,8 +11,8 @@
  * float function actually receives.
  *
  * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
- * and the Dirac limits |g| = 1; alpha from 1e4 to 1e30 and +inf with |g| <=
- * 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); and all of it
+ * and the Dirac limits |g| = 1; alpha from 1e4 to DBL_MAX and +inf with
+ * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); and all of it
  * again through the prepared phase functions (mist_phase_*).  Mirrors the "exact sampling" sections of
  * include/mist.h. */
 #include "mist.h"
@@ -345,12 +345,15 @@ static void test_rayleigh_ends(void)
  * a solver that judged convergence by the density at its iterate stopped
  * far from the root (-0.0208 for -0.00366 at g = 0, alpha = 2^20, xi =
  * 1/2 - 2^-25 in float).  xi within a few ulps of 1/2 and of F(0) (the
- * float128 reference's), every alpha from 1e4 to 1e30 and +inf, and the
- * samples must be monotone over runs of adjacent xi there. */
+ * float128 reference's), every alpha from 1e4 to 1e30, beyond 1e270
+ * (where the double-double finish's exact weights (1, alpha) would overflow
+ * and it takes (1/alpha, 1); the prepared one, with (1, alpha), falls back)
+ * up to DBL_MAX, and +inf, and the samples must be monotone over runs of
+ * adjacent xi there. */
 static void test_huge_alpha(void)
 {
     static const double as[] = { 1e4, 1e5, 0x1p20, 3e6, 1e8, 0x1p40, 1e12, 1e20, 1e30,
-                                 INFINITY };
+                                 1e300, DBL_MAX, INFINITY };
     static const double gs[] = { 0, 4.9406564584124654e-324, -4.9406564584124654e-324,
                                  1e-40, -1e-40, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3 };
     size_t ia, ig;
@@ -360,7 +363,7 @@ static void test_huge_alpha(void)
             double g = gs[ig], a = as[ia];
             qreal qa = a > 1e308 ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
             double f0 = (double)ref_cdf(g, qa, 0);
-            float f0f = (float)ref_cdf((float)g, a > 1e308 ? qa : (float)a, 0);
+            float f0f = (float)ref_cdf((float)g, (float)a > FLT_MAX ? qa : (float)a, 0);
             for (c = 0; c < 2; ++c) {           /* around 1/2, around F(0) */
                 double x = c ? f0 : 0.5, prev = -2;
                 float xf = c ? f0f : 0.5f, prevf = -2;
@@ -370,7 +373,7 @@ static void test_huge_alpha(void)
                     double u = sample_d(KIND_DRAINE, g, a, x);
                     float uf = sample_f(KIND_DRAINE, (float)g, (float)a, xf);
                     check_point(KIND_DRAINE, g, a, x);
-                    if ((float)x != xf) check_point(KIND_DRAINE, xf, (float)a, xf);
+                    if ((float)x != xf) check_point(KIND_DRAINE, g, a, xf);
                     bad_d += u < prev; prev = u;
                     bad_f += uf < prevf; prevf = uf;
                     x = nextafter(x, 1); xf = nextafterf(xf, 1);
