@@ -818,10 +818,16 @@ MI_INLINE MI_T MI_F(mi_fog_sample)(MI_FOGT raw, MI_T xi)
         MI_T u2 = MI_CALL(MI_L(mist_fog_sample)(f, xi));
         if (!MI_F(mi_same)(u, u2)) MI_FSFAIL("differs from the sanitised struct's");
     }
-    /* the documented lobe choice: xi < w_d picks Draine at xi / w_d, else
-     * HG at (xi - w_d) / (1 - w_d) */
-    ref = dr ? MI_CALL(MI_L(mist_draine_sample)(f.g_d, f.alpha, xs / w))
-             : MI_CALL(MI_L(mist_hg_sample)(f.g_hg, (xs - w) / (1 - w)));
+    /* the documented lobe choice: xi < w_d picks Draine at xi' = xi / w_d,
+     * else HG at xi' = (xi - w_d) / (1 - w_d); for 0 < w_d < 1 and xi' >
+     * 1 - 512 DBL_EPSILON (1024 unit roundoffs) the lobe's mirror image
+     * -u(-g, 1 - xi') at 1 - xi' = (w_d - xi) / w_d resp. (1 - xi) / (1 - w_d) */
+    {
+        MI_T lo = dr ? 0 : w, top = dr ? w : 1, x = (xs - lo) / (top - lo), s = 1;
+        if (w > 0 && w < 1 && x > 1 - 512 * MI_EPS) { x = (top - xs) / (top - lo); s = -1; }
+        ref = dr ? s * MI_CALL(MI_L(mist_draine_sample)(s * f.g_d, f.alpha, x))
+                 : s * MI_CALL(MI_L(mist_hg_sample)(s * f.g_hg, x));
+    }
     if (!MI_F(mi_same)(u, ref)) MI_FSFAIL("not the documented lobe's sample");
     if (dr ? (f.g_d == 1 || f.g_d == -1) && u != f.g_d
            : (f.g_hg == 1 || f.g_hg == -1) && u != f.g_hg)

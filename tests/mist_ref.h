@@ -133,15 +133,24 @@ static inline qreal ref_sample(qreal g, qreal a, qreal xi)
  *     |u - u*| <= 4 ulp(u*) + 4 eps xi du/dxi,   du/dxi = 1 / (2 pi p(u*))
  * eps = 2^-53 or 2^-24, ulp(u*) the type's spacing at u* (the smallest
  * subnormal at 0), no xi term at |g| = 1 (the Dirac limit).  Returns
- * |u - u*| over the bound (<= 1 passes) and u* in *us. */
-static inline double ref_bar(double g, qreal a, double xi, double u, int flt, double *us)
+ * |u - u*| over the bound (<= 1 passes) and u* in *us.
+ * ref_bar_q: at an exact xi given in __float128 (the fog's rescaled xi'),
+ * the bar's xi term taken as 4 eps xt du/dxi (xt: what the rounding of the
+ * caller's own xi moves xi' by, in units of eps); ref_bar: xi itself. */
+static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u, int flt,
+                               double *us)
 {
     double r = (double)ref_sample_from(g, a, xi, u), tol;
     tol = 4 * (flt ? (double)(nextafterf((float)fabs(r), INFINITY) - (float)fabs(r))
                    : nextafter(fabs(r), INFINITY) - fabs(r));
-    if (fabs(g) < 1) tol += 4 * (flt ? 0x1p-24 : 0x1p-53) * xi / (double)ref_density_u(g, a, r);
+    if (fabs(g) < 1) tol += 4 * (flt ? 0x1p-24 : 0x1p-53) * xt / (double)ref_density_u(g, a, r);
     *us = r;
     return fabs(u - r) / tol;
+}
+
+static inline double ref_bar(double g, qreal a, double xi, double u, int flt, double *us)
+{
+    return ref_bar_q(g, a, xi, xi, u, flt, us);
 }
 
 #endif

@@ -554,6 +554,84 @@ static void test_cert(void)
            wrong_ctl, tried);
 }
 
+/* The fog mixture (mist_fog_sample, and prepared): one xi picks the lobe
+ * and is rescaled, xi' = xi / w (Draine) or (xi - w) / (1 - w) (HG); the
+ * sample must meet the bar of its lobe at the exact xi' (in __float128),
+ * the xi term from xi's own rounding, eps xi / w resp. eps xi / (1 - w).
+ * Random fogs with lobes up to g = +-(1 - 2^-52), and xi at the lobes'
+ * ends (0, a few ulps below and above w, a few ulps below 1), where xi'
+ * rounded in the working type loses 1 - xi' (found by an independent
+ * check: u = 1 instead of -0.78).  Negative control: that rounded xi' fed
+ * to the HG sampler at the found point must fail the same check. */
+static double fog_worst[2];
+static long fog_n;
+
+static double fog_check(double gh, double gd, double a, double w, double xi, int flt,
+                        double u)
+{
+    int dr = xi < w || w >= 1;
+    qreal xq = dr ? (qreal)xi / (qreal)w : ((qreal)xi - (qreal)w) / (1 - (qreal)w);
+    double us, r;
+    r = ref_bar_q(dr ? gd : gh, dr ? (qreal)a : 0, xq, xi / (dr ? w : 1 - w), u, flt, &us)
+        / (flt ? 1 : relax_d(dr ? KIND_DRAINE : KIND_HG, a));   /* (test_accuracy_nold) */
+    if (r > fog_worst[flt]) fog_worst[flt] = r;
+    ++fog_n;
+    mt_check(r <= 1, "fog %s g_hg=%a g_d=%a alpha=%a w=%a xi=%a: u=%.17g u*=%.17g (%.2f x the "
+             "bound)", flt ? "float" : "double", gh, gd, a, w, xi, u, us, r);
+    return r;
+}
+
+static double fog_g(mt_rng *r)
+{
+    double x = mt_uniform(r), s = mt_uniform(r) < 0.5 ? -1 : 1;
+    int k = 1 + (int)(52 * mt_uniform(r));
+    return (mt_next(r) & 1) ? s * (1 - ldexp(1, -k)) : s * x;
+}
+
+static void test_fog(void)
+{
+    mt_rng rng = { 9090 };
+    int k, j, n = (int)mt_scale(1500, 150);
+    double gh = -0x1.ffffffffffffep-1, w = 0x1.fffe7c730755bp-2, xi = 0x1.fffffffffffffp-1;
+    double bad = mist_hg_sample(gh, (xi - w) / (1 - w)), us;
+    double rb = ref_bar_q(gh, 0, ((qreal)xi - w) / (1 - (qreal)w), xi / (1 - w), bad, 0, &us);
+    mt_check(rb > 1, "fog control: xi' rounded to %a gives u=%.17g, u*=%.17g (%.2f x the "
+             "bound): must fail", (xi - w) / (1 - w), bad, us, rb);
+    for (k = 0; k < n; ++k) {
+        double gd = fog_g(&rng), a = (k % 4 == 0) ? 0 : pow(10, -3 + 9 * mt_uniform(&rng));
+        double x[8], wf;
+        float gf, gdf, af, xf;
+        mist_fog f;
+        mist_fogf ff;
+        mist_phase ph;
+        mist_phasef phf;
+        gh = fog_g(&rng);
+        w = (k % 3 == 0) ? 0.5 * mt_uniform(&rng) : mt_uniform(&rng);
+        f = mist_fog_make(gh, gd, a, w);
+        ph = mist_phase_fog(f);
+        gf = (float)gh; gdf = (float)gd; af = (float)a; wf = (float)w;
+        ff = mist_fog_makef(gf, gdf, af, (float)wf);
+        phf = mist_phase_fogf(ff);
+        x[0] = mt_uniform(&rng);
+        x[1] = 1 - ldexp(1, -53 + (int)(mt_next(&rng) % 3));     /* 1 - 1..4 ulps */
+        x[2] = w * (1 - ldexp(1, -53 + (int)(mt_next(&rng) % 3)));   /* just below w */
+        x[3] = nextafter(w, 2);                                   /* just above w */
+        x[4] = w * mt_uniform(&rng);
+        x[5] = 1 - ldexp(mt_uniform(&rng), -40);
+        x[6] = 1 - ldexp(1, -24 + (int)(mt_next(&rng) % 3));     /* float: 1 - 1..4 ulps */
+        x[7] = wf * (1 - ldexp(1, -24 + (int)(mt_next(&rng) % 3)));
+        for (j = 0; j < 8; ++j) {
+            fog_check(gh, gd, a, w, x[j], 0, mist_fog_sample(f, x[j]));
+            fog_check(gh, gd, a, w, x[j], 0, mist_phase_sample(&ph, x[j]));
+            xf = (float)x[j];
+            fog_check(gf, gdf, af, wf, xf, 1, mist_fog_samplef(ff, xf));
+            fog_check(gf, gdf, af, wf, xf, 1, mist_phase_samplef(&phf, xf));
+        }
+    }
+    printf("test_accuracy: fog mixture: %ld samples; worst |u - u*| / bound: double %.3f, "
+           "float %.3f (control: %.2f)\n", fog_n, fog_worst[0], fog_worst[1], rb);
+}
+
 /* The reported failures themselves (independent float128 values). */
 static void test_issue2_points(void)
 {
@@ -585,6 +663,7 @@ int main(void)
     test_rayleigh_ends();
     test_cert();
     test_cbrt();
+    test_fog();
     printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f%s, float %.3f\n",
            n_points, worst_d, NOLD ? " (of the relaxed bound, MIST_NO_LONG_DOUBLE)" : "",
            worst_f);
