@@ -507,7 +507,7 @@ static void hg_target_rows(void)
     b = b_bare_sample;
     row("eq. 3 HG sample (double, scalar)", b_bare_sample, NULL, NULL);
     row("mist_hg_sample", b_hg_sample, "eq. 3", b);
-    row("mist_hg_sample (no long double)", b_hg_sample_nold, "eq. 3", b);
+    row("mist_hg_sample (no long double, no fma)", b_hg_sample_nold, "eq. 3", b);
     row("  the same at g .5", b_hg_sample_nold5, "eq. 3", b);
     row("  the same at g .3", b_hg_sample_nold3, "eq. 3", b);
     row("  the same at g .1", b_hg_sample_nold1, "eq. 3", b);
@@ -533,7 +533,7 @@ static void hg_target_rows(void)
     b = v_bare_sample;
     row("eq. 3 HG sample (double, vector)", v_bare_sample, NULL, NULL);
     row("mist_hg_sample_n", n_hg_sample, "eq. 3", b);
-    row("mist_hg_sample_n (no long double)", n_hg_sample_nold, "eq. 3", b);
+    row("mist_hg_sample_n (no long double, no fma)", n_hg_sample_nold, "eq. 3", b);
     b = v_eq6f;
     row("eq. 6 Draine sample (float, array)", v_eq6f, NULL, NULL);
     row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "eq. 6", b);
@@ -550,7 +550,7 @@ static void batch_rows(void)
 #else
     row_speedup("mist_hg_sample_n (long double)", n_hg_sample, b_hg_sample);
 #endif
-    row_speedup("mist_hg_sample_n (no long double)", n_hg_sample_nold, b_hg_sample_nold);
+    row_speedup("mist_hg_sample_n (no long double, no fma)", n_hg_sample_nold, b_hg_sample_nold);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
     row_speedup("mist_draine_sample_nf (prepares once)", n_draine_samplef, b_draine_samplef);
@@ -1022,7 +1022,7 @@ int main(void)
     row("eq. 6 Draine as printed (double)", b_eq6, "eq. 6 float", base);
     row("mist_draine_samplef (g .5, a 17)", b_draine_samplef, "eq. 6 float", base);
     row("mist_draine_sample  (g .5, a 17)", b_draine_sample, "eq. 6 float", base);
-    row("  the same, no long double", b_draine_sample_nold, "eq. 6 float", base);
+    row("  the same, no long double, no fma", b_draine_sample_nold, "eq. 6 float", base);
     base = b_eq6f_250;
     row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, NULL);
     row("mist_draine_samplef (g .1, a 250)", b_draine_samplef_250, "eq. 6 float", base);
@@ -1032,7 +1032,7 @@ int main(void)
     row("Rayleigh sample, float arithmetic only", b_rayleigh_floatonly, NULL, NULL);
     row("mist_rayleigh_samplef (double inside)", b_rayleigh_samplef, "float only", base);
     row("mist_rayleigh_sample", b_rayleigh_sample, NULL, NULL);
-    row("mist_rayleigh_sample (no long double)", b_rayleigh_sample_nold, NULL, NULL);
+    row("mist_rayleigh_sample (no long double, no fma)", b_rayleigh_sample_nold, NULL, NULL);
     row("mist_fog_evalf (d = 10 um)", b_fog_evalf, NULL, NULL);
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, NULL);
     prepared_rows();

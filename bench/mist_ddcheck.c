@@ -46,8 +46,11 @@ int main(void)
     int kind;
 #if defined(FP_FAST_FMA)
     printf("double HG, Rayleigh and Draine samplers: double-double (FP_FAST_FMA)\n");
+#elif defined(MIST_NO_LONG_DOUBLE) || LDBL_MANT_DIG == DBL_MANT_DIG
+    printf("double HG, Rayleigh and Draine samplers: double-double, Dekker's product "
+           "(no FP_FAST_FMA, no wider long double)\n");
 #else
-    printf("double HG, Rayleigh and Draine samplers: long double or double (no FP_FAST_FMA)\n");
+    printf("double HG, Rayleigh and Draine samplers: long double (no FP_FAST_FMA)\n");
 #endif
     for (kind = 0; kind < 3; ++kind)
         for (k = 0; k < n[kind]; ++k) {

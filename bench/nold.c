@@ -1,9 +1,11 @@
 /* nold.c - the double samplers as built without a wider long double
  * (MIST_NO_LONG_DOUBLE) and, on x86 with gcc or clang, without fma
- * (-mno-fma, CMakeLists.txt): what MSVC x64 gets (see "Henyey-Greenstein:
- * exact sampling" in mist.h; with fma the HG sampler is double-double
- * either way), timed by bench/mist_bench.c in loops of the same shape as
- * its own (bench/bench.h). */
+ * (-mno-fma -mno-avx512f, CMakeLists.txt): what MSVC x64 gets, double-double
+ * by Dekker's product (see "Henyey-Greenstein: exact sampling" in mist.h),
+ * timed by bench/mist_bench.c in loops of the same shape as its own
+ * (bench/bench.h).  (Until the fifth session of 2026-11-27 this file was
+ * built with -mno-fma alone, which leaves AVX-512's fma and FP_FAST_FMA:
+ * its rows timed the fma path.) */
 #define MIST_NO_LONG_DOUBLE
 #include "mist.h"
 #include "bench.h"

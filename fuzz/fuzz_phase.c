@@ -80,7 +80,8 @@ static void fz_order(const char *fn, double g, double a, double x1, double u1, d
  * and batch forms (mi_phase: sample_dir with and without pdf) fail by an
  * ulp there (measured, gcc 12 -O3 -march=native): skipped in such builds;
  * test_stress checks those forms with its contraction tolerances. */
-#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(__FMA__) \
+    || defined(__ARM_FEATURE_FMA)
 #  define FZ_CONTRACT 1
 #else
 #  define FZ_CONTRACT 0

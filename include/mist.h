@@ -46,12 +46,12 @@
  *   practice and monotone (the HG and Rayleigh batch forms vectorise).
  *   Elsewhere they finish in long double where it is wider (x86 with gcc or
  *   clang, the default build), with the same bar.  With neither (MSVC x64;
- *   or MIST_NO_LONG_DOUBLE without fma) they run in double: HG and Rayleigh
- *   within the bar, Draine and Cornette-Shanks within 2x of it (6x for
- *   alpha > 1e4), and NOT monotone in adjacent xi (a sample may be an ulp
- *   or two below the one before; tests/test_accuracy.c counts them, built as
- *   test_accuracy_nold; test_accuracy_nold_native is the fma build without
- *   long double, held to the full bar).  Float is the same everywhere.  Run
+ *   or MIST_NO_LONG_DOUBLE without fma) they take double-double too, its
+ *   products by Dekker's splitting instead of fma (mist__two_prod): the
+ *   same bar, monotone (test_accuracy_nold; test_accuracy_nold_native is
+ *   the fma build without long double), at about long double's cost (until
+ *   the fifth session of 2026-11-27 they ran in double there: Draine up to
+ *   3.1x the bar near u = 0, not monotone).  Float is the same everywhere.  Run
  *   in CUDA device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90;
  *   tests/gpu/; before the double Draine samplers took double-double, not
  *   yet run on a GPU since): every sampler within those bars, float
@@ -82,11 +82,10 @@
  *                 __host__ __device__ under nvcc, so kernels can call them).
  *   MIST_ALLOW_FAST_MATH  compile mist with the includer's fast-math flags
  *                 instead of guarding against them (see FAST MATH).
- *   MIST_NO_LONG_DOUBLE  run the double samplers in double even where long
- *                 double is wider: what MSVC, ARM Macs and CUDA device code
- *                 get (see above): Draine ~1.7x faster, Rayleigh ~2x
- *                 (without fma), for those bars and no monotonicity
- *                 (README "Speed").
+ *   MIST_NO_LONG_DOUBLE  build the double samplers as where long double is
+ *                 no wider (MSVC, ARM Macs, CUDA device code): double-double
+ *                 (see above; the tests build it).  The same bar; without fma
+ *                 about the cost of long double (README "Speed").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -528,7 +527,7 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 /*  - long double, internal formulas only: the wide type of the double       */
 /*    samplers' final Newton step, where long double is wider than double   */
 /*    (x86: 64-bit significand).  Elsewhere (MSVC, Apple, CUDA device code)  */
-/*    that step is skipped: see "Draine and Cornette-Shanks: exact sampling".*/
+/*    the double samplers finish in double-double instead (mist__two_prod). */
 /*  - double (plain names), wide type long double;                           */
 /*  - float ('f' suffix), wide type double.                                  */
 /* ------------------------------------------------------------------------ */
@@ -560,7 +559,9 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #define MIST__UB    uint64_t                  /* the bits of T: */
 #define MIST__MB    52                        /*  its mantissa's, */
 #define MIST__EB    2047                      /*  its exponent field's all-ones */
-#if defined(FP_FAST_FMA)
+/* fma is one instruction: FP_FAST_FMA (gcc), or the target's fma feature
+ * macro (clang defines no FP_FAST_FMA; gcc and clang inline fma() there) */
+#if defined(FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
 #  define MIST__FAST_FMA 1
 #endif
 #if defined(MIST__HAVE_LD) && !defined(__CUDA_ARCH__)
@@ -636,9 +637,15 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 /* the double HG and Rayleigh samplers in double-double (see "Henyey-
  * Greenstein: exact sampling", "Rayleigh: exact sampling"): double where
  * fma is one instruction */
-#if (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)) && !defined(MIST__W_EXACT) \
-    && !defined(MIST__INTERNAL_ONLY)
+#if (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__) || !defined(MIST__W)) \
+    && !defined(MIST__W_EXACT) && !defined(MIST__INTERNAL_ONLY)
 #  define MIST__DD 1
+#endif
+/* ... whose batch forms vectorise where fma is one instruction; with
+ * Dekker's product (mist__two_prod: branches for overflow) they loop over
+ * the scalar function */
+#if defined(MIST__DD) && (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__))
+#  define MIST__DDV 1
 #endif
 
 /* ======================================================================== */
@@ -679,7 +686,7 @@ MIST__F MIST__T MIST__FN(mist__clamp)(MIST__T x, MIST__T lo, MIST__T hi)
  * never a slow software fma. */
 MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
 {
-#if defined(MIST__FAST_FMA)
+#if defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)
     return MIST__M(fma)(a, b, c);
 #else
     return a * b + c;
@@ -732,6 +739,20 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__two_prod)(MIST__T a, MIST__T b, MIST__T
     *e = (((ah * bh - ps) + ah * bl + al * bh) + al * bl) * sc;
 #endif
     return p;
+}
+
+/* c - a b, exact where c is within a factor 2 of the rounded a b (the
+ * remainder of a division c / b = a or of a square root, c = a^2): one fma
+ * where the hardware has it, else Dekker's product, whose rounded part
+ * then cancels against c exactly (Sterbenz). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__fms)(MIST__T a, MIST__T b, MIST__T c)
+{
+#if defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__)
+    return MIST__M(fma)(-a, b, c);
+#else
+    MIST__T e, p = MIST__FN(mist__two_prod)(a, b, &e);
+    return (c - p) - e;
+#endif
 }
 #endif /* !MIST__INTERNAL_ONLY */
 
@@ -798,10 +819,11 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* enough everywhere and for either sign of g, no mirror (mist__hg_one: one */
 /* division, no branch, vectorisable; measured 0.125x the float bar).       */
 /*                                                                          */
-/* WITHOUT A WIDER TYPE (double where long double is no wider: MSVC, ARM    */
-/* Macs, CUDA device code, or MIST_NO_LONG_DOUBLE) the three forms in       */
-/* double miss the bar by 1.1x near u = -1/2 at small |g|.  There mist      */
-/* takes forms that keep precision in double (mist__hg_dbl):                */
+/* WITHOUT A WIDER TYPE the three forms miss the bar by 1.1x near u = -1/2  */
+/* at small |g|: so the long double pass (the double sampler's wide type)   */
+/* takes forms that keep precision in its type (mist__hg_dbl; until the     */
+/* fifth session of 2026-11-27 also double where long double is no wider,   */
+/* now double-double there, below):                                         */
 /*   |g| <= 1/4:  u = (2 xi - 1) + 2 g xi (1-xi) (3 - g^2 + 2 g (2xi-1))/D^2 */
 /*     (u minus the isotropic answer, multiplied out: the correction is     */
 /*     O(g), so its relative error costs little, and 2 xi - 1 is exact for */
@@ -811,18 +833,15 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /*     above where xi >= 1/4, the middle form below.                        */
 /* Measured against the float128 inversion: 0.43x the bar for |g| <= 1/4,  */
 /* 0.74x above (1e5 random (g, xi) each; tests/test_accuracy.c checks it    */
-/* with MIST_NO_LONG_DOUBLE).  Cost (./build/mist_bench, busy machine,     */
-/* -march=native): 1.5-2.5x eq. 3 in double at g = 0.1, 2.2-3.5x at 0.8,    */
-/* 3.3-6x at 0.3-0.5 (the branch to the second stage mispredicts), against  */
-/* 4.2-6.3x for the long double forms in the same runs; ~4x at every g      */
-/* built with -mno-fma (bench/nold.c now: gcc's -mno-fma drops AVX-512).    */
-/* But with errors of an ulp or two these are not monotone in adjacent xi: */
-/* 0.01-2.5% of adjacent double pairs come out reversed (g .1 to .8;        */
+/* with MIST_NO_LONG_DOUBLE, then).  In double they cost 1.5-6x eq. 3, but  */
+/* with errors of an ulp or two they are not monotone in adjacent xi:       */
+/* 0.01-2.5% of adjacent double pairs came out reversed (g .1 to .8;        */
 /* measured over 1e7 each).  Monotone and within the bar needs ~11 more     */
 /* bits: long double, or                                                    */
 /*                                                                          */
 /* DOUBLE-DOUBLE where fma is one instruction (x86 with -march=haswell or   */
-/* later, ARM64, CUDA device code: FP_FAST_FMA): the one form 1 - nb/D^2    */
+/* later, ARM64, CUDA device code: FP_FAST_FMA), or where long double is no */
+/* wider (with Dekker's product: mist__two_prod): the one form 1 - nb/D^2   */
 /* with every term as an unevaluated sum hi + lo (products by fma, sums by  */
 /* Knuth's two-sum; 1 - xi exact as such a pair), one division and its     */
 /* remainder by fma (mist__hg_dd).  About 2^-100 of error: correctly        */
@@ -830,9 +849,11 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* 1e-300 and up to 1 - 2^-53, xi down to 2^-1074, against float128: within */
 /* 0.243x the bar, 99961 the rounded root), monotone (0 reversed pairs),    */
 /* branch-free (the batch form vectorises); 3.0-3.5x eq. 3 against ~4x for  */
-/* long double (./build/mist_bench).                                        */
-/* This is the double sampler wherever it applies; elsewhere long double,  */
-/* or without either (MSVC x64) the double forms above.                     */
+/* long double (./build/mist_bench).  With Dekker's product (no fma, no     */
+/* wider long double: MSVC x64) the same values and checks (mist_ddcheck    */
+/* built so: 0.25x, 99959 of 1e5 rounded, 0 reversed), ~13 ns a sample (the */
+/* double forms took 2.4; measured: README "Without a wider long double").  */
+/* This is the double sampler wherever it applies; elsewhere long double.   */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -949,7 +970,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dd)(MIST__T g, MIST__T xh, MIST__T x
     nh = MIST__FN(mist__two_prod)(ah, eh, &nl); nl += ah * el + al * eh;      /* nb / 2 */
     nh *= MIST__C(2); nl *= MIST__C(2);
     iv = MIST__C(1) / qh; q1 = nh * iv;                                       /* nb / D^2 */
-    q2 = (MIST__M(fma)(-q1, qh, nh) + nl - q1 * ql) * iv;    /* (the remainder is exact) */
+    q2 = (MIST__FN(mist__fms)(q1, qh, nh) + nl - q1 * ql) * iv;   /* (the remainder is exact) */
     sh = MIST__FN(mist__two_sum)(MIST__C(1), -q1, &sl);                       /* 1 - q */
     return sh + (sl - q2);
 }
@@ -1030,8 +1051,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* to 2^-1074, the rounded float128 root, 0 reversed; batch form            */
 /* vectorises; scalar 13.0 ns against 19.8 with the two-step start, 1.17x   */
 /* the long double version before that, measured side by side: the          */
-/* compensated Horner is a chain).  Without either, double in double:       */
-/* within the bar (test_accuracy_nold) but not monotone in adjacent xi.     */
+/* compensated Horner is a chain).  Without either: the same double-double  */
+/* with Dekker's product (until the fifth session of 2026-11-27 double      */
+/* alone, within the bar but not monotone in adjacent xi).                  */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2].  fl (the float
@@ -1232,9 +1254,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
 
 /* The HG sample at sanitised |g| < 1, xi in [0, 1]: float in double by the
  * one form (mist__hg_one); double in double-double where fma is one
- * instruction (mist__hg_ddu), else by the three forms in long double (0.5
- * ulp instead of up to 4.4 in double, measured), or without a wider type
- * by mist__hg_dbl. */
+ * instruction or long double is no wider (mist__hg_ddu), else by the
+ * three forms in long double (0.5 ulp instead of up to 4.4 in double,
+ * measured); the long double pass itself by mist__hg_dbl. */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
@@ -1337,12 +1359,13 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* (the residual as written) -> 89 (the step's divisions off its chain:     */
 /* 48 -> 39 ns of latency in a one-off harness).                            */
 /* Where there is neither (MSVC x64, or MIST_NO_LONG_DOUBLE without fma)    */
-/* the double samplers skip the wide steps: within 2x the bar (1.75x        */
-/* measured) for alpha <= 1e4, up to 6x for alpha > 1e4, |g| <= 1e-3 and xi */
-/* within a few ulps of F(0), where F is flat to third order (4.8x measured */
-/* without fma, 5.7x with fma and no other contraction, x86 -march=native   */
-/* -std=c99); and not monotone in adjacent xi (tests/test_accuracy.c,       */
-/* test_accuracy_nold).                                                     */
+/* the same double-double finish runs with Dekker's product (mist__two_prod,*/
+/* mist__fms): the full bar and monotone (test_accuracy_nold; mist_ddcheck  */
+/* built so: 0.25x, 19998 of 2e4 rounded), ~135 ns a sample (g .5, alpha    */
+/* 17), prepared ~126.  Until the fifth session of 2026-11-27 those builds  */
+/* skipped the wide steps (60 and 31 ns): documented within 2x the bar for  */
+/* alpha <= 1e4 and not monotone; an independent check found 2.3x and a     */
+/* targeted scan near u = 0 (xi near F(0)) 3.1x.                            */
 /* The float sampler first rounds eq. 6's double answer to float and        */
 /* certifies it by one residual at that answer and the density there        */
 /* (mist__draine_cert): where the residual is certainly below half the      */
@@ -1556,15 +1579,15 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
 MIST__F MIST__HOT MIST__T MIST__FN(mist__cm)(MIST__T ah, MIST__T al, MIST__T bh, MIST__T bl,
                                              MIST__T *l)
 {
-    MIST__T p = ah * bh;
-    *l = MIST__M(fma)(ah, bl, MIST__M(fma)(al, bh, MIST__M(fma)(ah, bh, -p)));
+    MIST__T e, p = MIST__FN(mist__two_prod)(ah, bh, &e);
+    *l = MIST__FN(mist__fma)(ah, bl, MIST__FN(mist__fma)(al, bh, e));
     return p;
 }
 /* h + *l = a (bh + bl), a exact */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__cs)(MIST__T a, MIST__T bh, MIST__T bl, MIST__T *l)
 {
-    MIST__T p = a * bh;
-    *l = MIST__M(fma)(a, bl, MIST__M(fma)(a, bh, -p));
+    MIST__T e, p = MIST__FN(mist__two_prod)(a, bh, &e);
+    *l = MIST__FN(mist__fma)(a, bl, e);
     return p;
 }
 /* h + *l = (ah + al) + (bh + bl) */
@@ -1604,7 +1627,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
     wh = MIST__FN(mist__ca)(oh, ol, th, tl, &wl);
     *v2 = wh;
     vh = MIST__M(sqrt)(wh);                                           /* V */
-    vl = (MIST__M(fma)(-vh, vh, wh) + wl) / (MIST__C(2) * vh);
+    vl = (MIST__FN(mist__fms)(vh, vh, wh) + wl) / (MIST__C(2) * vh);
     uh *= sg; ul *= sg;                                               /* mirrored */
     v1h = MIST__FN(mist__fast_two_sum)(MIST__C(1), gg, &v1l);         /* 1 + gg */
     mh = MIST__FN(mist__fast_two_sum)(MIST__C(1), -gg, &ml);          /* 1 - gg */
@@ -1614,7 +1637,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
     nh = MIST__FN(mist__fast_two_sum)(MIST__C(1), MIST__C(2) * g2h, &nl);
     nl += MIST__C(2) * g2l;                                           /* 1 + 2 g^2 */
     qh = nh / MIST__C(3);
-    ql = (MIST__M(fma)(-qh, MIST__C(3), nh) + nl) / MIST__C(3);
+    ql = (MIST__FN(mist__fms)(qh, MIST__C(3), nh) + nl) / MIST__C(3);
     qh = MIST__FN(mist__cs)(c1, qh, ql, &ql);
     cnh = MIST__FN(mist__ca)(c0, MIST__C(0), qh, ql, &cnl);          /* cn */
     ph = MIST__FN(mist__cm)(vh, vl, v1h, v1l, &pl);                   /* P = V v1 */
@@ -2671,7 +2694,7 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
         MIST__FN(mist__hg_par)(g, t);
         MIST__BLOCKS(y_[j_] = MIST__FN(mist__hg_at)(t, MIST__FN(mist__clamp01)(x_[j_], z, one)))
     }
-#elif defined(MIST__DD)
+#elif defined(MIST__DDV)
     {   /* double-double (mist__hg_ddu), branch-free, 0 and 1 read at run
          * time (see below) */
         volatile MIST__T z0 = 0;
@@ -2679,33 +2702,9 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
         MIST__BLOCKS(MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
                      y_[j_] = MIST__FN(mist__hg_ddu)(g, xi, z, one))
     }
-#elif defined(MIST__W) || !defined(__AVX__)
-    /* long double has no vectors; and with 2 doubles a vector (SSE2, NEON)
-     * the second stage's division for every element costs more than the
-     * branch saves: loop over the scalar function */
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(g, in[i]);
 #else
-    {   /* without a wider type (mist__hg_dbl): |g| <= 1/4 one branch-free
-         * form; above, both stages for every element and a select.  The 0
-         * and 1 at run time: gcc -O2 threads jumps through literal
-         * constants, duplicates the division into branches and then will
-         * not vectorise (it may trap). */
-        volatile MIST__T z0 = 0;        /* a zero no compiler can fold */
-        MIST__T z = z0, one = z + 1, ga = g < z ? -g : g, neg = g < z ? one : z, omg, c;
-        MIST__FN(mist__hg_pre)(ga, &omg, &c);
-        if (ga <= MIST__C(0.25)) {
-            MIST__BLOCKS(MIST__T x = MIST__FN(mist__clamp01)(x_[j_], z, one);
-                         y_[j_] = MIST__FN(mist__clamp11)(MIST__FN(mist__hg_near)(g, x)))
-        } else {
-            MIST__BLOCKS(MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-                         MIST__T x = neg * (one - xi) + (one - neg) * xi;
-                         MIST__T y = neg * xi + (one - neg) * (one - xi);
-                         MIST__T u = MIST__FN(mist__hg_one)(ga, omg, c, x, y);
-                         MIST__T u2 = MIST__FN(mist__hg_rest)(ga, x, y, u, z, one);
-                         u = MIST__FN(mist__clamp11)(u > MIST__C(0.375) ? u : u2);
-                         y_[j_] = u * (one - MIST__C(2) * neg))
-        }
-    }
+    /* long double has no vectors: loop over the scalar function */
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(g, in[i]);
 #endif
 }
 
@@ -2777,7 +2776,7 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
     MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
                  y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_u)(x,
                                                    MIST__EPS > 1e-10)))
-#elif defined(MIST__DD)
+#elif defined(MIST__DDV)
     volatile MIST__T z0 = 0;
     MIST__T z = z0, one = z + 1;
     MIST__BLOCKS(MIST__T x = MIST__FN(mist__clamp01)(x_[j_], z, one);
@@ -2885,7 +2884,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         MIST__FN(mist_hg_sample_n)(p->g_hg, in, out, n);
         return;
     }
-#if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DD))
+#if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
     if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
         && p->g > MIST__C(-1) && p->g < MIST__C(1)) {
         volatile MIST__T z0 = 0;
@@ -2943,7 +2942,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             st = MIST__FN(mist__phase_start)(tab, xi, &k);
             ut = MIST__FN(mist__draine_step)(g, fin, a, xi, st, tab[2 * MIST__PHASE_K + 2 + k],
                                              MIST__C(0), &ok, &et);
-            ut = (ut >= tab[k]) & (ut <= tab[k + 1]) ? ut : st;   /* (no branch) */
+            ut = ((ut >= tab[k]) & (ut <= tab[k + 1])) ? ut : st;   /* (no branch) */
             us_[j_] = ut;
             f_[j_] = (unsigned char)(MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
                                                                 &uh, &lo, &hi) != 1);
@@ -4256,6 +4255,7 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 
 #undef MIST__C
 #undef MIST__DD
+#undef MIST__DDV
 
 #endif /* MIST__TEMPLATE */
 

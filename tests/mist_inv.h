@@ -938,7 +938,8 @@ MI_INLINE MI_V3 MI_F(mi_normalize)(MI_V3 v)
  * between two calls of mist_dir_from_cos at the same sanitised input once
  * the double HG sampler went double-double): there a direction equals
  * another to 4 eps per component (unit vectors). */
-#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA) || defined(__FMA__) \
+    || defined(__ARM_FEATURE_FMA)
 #  define MI_CONTRACT 1
 #else
 #  define MI_CONTRACT 0
@@ -1062,7 +1063,8 @@ MI_INLINE MI_V3 MI_F(mi_fog_sample_dir)(MI_FOGT raw, MI_V3 wi, MI_T xi1, MI_T xi
  * before its sanitising), and where a product underflows each such
  * rounding is one subnormal ulp MI_TMIN absolute: 8 of them (measured: 1,
  * a float Draine density of 2^-131 at alpha 3.4e38). */
-#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA)
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(FP_FAST_FMA) || defined(__FMA__) \
+    || defined(__ARM_FEATURE_FMA)
 #  define MI_BATCH_SAME(a, b) (MI_F(mi_same)(a, b) || (MI_ISFIN(a) && MI_ISFIN(b) \
                                 && fabsl((mi_w)(a) - (b)) <= 8 * MI_EPS * fabsl((mi_w)(b)) \
                                                             + 8 * (mi_w)MI_TMIN))

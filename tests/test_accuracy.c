@@ -67,29 +67,14 @@ static void ref_params(int kind, double g, double a, double *rg, qreal *ra)
     if (*ra > 1e308) *ra = (qreal)1e300 * (qreal)1e300 * (qreal)1e300;
 }
 
-/* Built with MIST_NO_LONG_DOUBLE and without fma as one instruction
- * (test_accuracy_nold): the double samplers with neither a wider type nor
- * double-double, as on MSVC x64.  The header documents their bar there
- * ("Draine and Cornette-Shanks: exact sampling", "Henyey-Greenstein: exact
- * sampling"): HG and Rayleigh within it; Draine and Cornette-Shanks within
- * 2x for alpha <= 1e4 and 6x above (measured: 1.75x; 4.8x without fma,
- * 5.7x with fma and no contraction); not monotone in adjacent xi (the
- * decreases are counted and reported, not failed).  With fma as one
- * instruction (FP_FAST_FMA: test_accuracy_nold_native, as on ARM64 and in
- * CUDA device code) every double sampler finishes in double-double: the
- * full bar and monotone, as with long double.  Float is the same either
- * way. */
-#if defined(MIST_NO_LONG_DOUBLE) && !defined(FP_FAST_FMA)
-#  define NOLD 1
-#else
-#  define NOLD 0
-#endif
-static double relax_d(int kind, double a)
-{
-    if (!NOLD || kind == KIND_HG || kind == KIND_RAYLEIGH) return 1;
-    return kind == KIND_CS || a <= 1e4 ? 2 : 6;
-}
-static long nold_decreases = 0;
+/* Built with MIST_NO_LONG_DOUBLE (test_accuracy_nold: without fma as one
+ * instruction, as on MSVC x64; test_accuracy_nold_native: with it, as on
+ * ARM64 and in CUDA device code) the double samplers finish in
+ * double-double (products by Dekker's splitting, resp. by fma) instead of
+ * long double: the same bar, monotone.  (Until the fifth session of
+ * 2026-11-27 the build without fma ran them in double, documented within
+ * 2x the bar for Draine and not monotone; an independent check measured
+ * 3.1x near u = 0.)  Float is the same in every build. */
 
 static double worst_d = 0, worst_f = 0;
 static long n_points = 0;
@@ -106,7 +91,7 @@ static int check_point(int kind, double g, double a, double xi)
     /* double */
     ref_params(kind, g, a, &rg, &ra);
     u = sample_d(kind, g, a, xi);
-    r = ref_bar(rg, ra, xi, u, 0, &us) / relax_d(kind, a);
+    r = ref_bar(rg, ra, xi, u, 0, &us);
     if (r > worst_d) worst_d = r;
     ok &= mt_check(r <= 1, "%s double g=%.17g alpha=%.17g xi=%.17g: u=%.17g u*=%.17g "
                    "(%.2f x the bound)", kind_name[kind], g, a, xi, u, us, r);
@@ -229,7 +214,6 @@ static void test_monotone(void)
                         xf = nextafterf(xf, 2);
                     }
                 }
-                if (NOLD) { nold_decreases += bad_d; bad_d = 0; }
                 mt_check(bad_d == 0 && bad_f == 0,
                          "%s g=%g alpha=%g monotone in xi (%d double, %d float "
                          "decreases)", kind_name[kind], g, a, bad_d, bad_f);
@@ -335,7 +319,6 @@ static void test_rayleigh_ends(void)
             prev = u;
         }
     }
-    if (NOLD) { nold_decreases += bad; bad = 0; }
     mt_check(bad == 0, "double Rayleigh samples monotone near u = -1 and +1: %d reversals",
              bad);
 }
@@ -378,7 +361,6 @@ static void test_huge_alpha(void)
                     bad_f += uf < prevf; prevf = uf;
                     x = nextafter(x, 1); xf = nextafterf(xf, 1);
                 }
-                if (NOLD) { nold_decreases += bad_d; bad_d = 0; }
                 mt_check(bad_d == 0 && bad_f == 0, "draine g=%g alpha=%g monotone in xi "
                          "near %s (%d double, %d float decreases)", g, a,
                          c ? "F(0)" : "1/2", bad_d, bad_f);
@@ -453,7 +435,6 @@ static void test_near_one(void)
                     bad_f += uf < prevf; prevf = uf;
                     if (k % 256 == 0) check_point(KIND_DRAINE, g, a, xs[k]);
                 }
-                if (NOLD) { nold_decreases += bad_d; bad_d = 0; }
                 mt_check(bad_d == 0 && bad_f == 0, "draine g=%.17g alpha=%g monotone in xi "
                          "(|g| -> 1: %d double, %d float decreases)", g, a, bad_d, bad_f);
             }
@@ -572,8 +553,7 @@ static double fog_check(double gh, double gd, double a, double w, double xi, int
     int dr = xi < w || w >= 1;
     qreal xq = dr ? (qreal)xi / (qreal)w : ((qreal)xi - (qreal)w) / (1 - (qreal)w);
     double us, r;
-    r = ref_bar_q(dr ? gd : gh, dr ? (qreal)a : 0, xq, xi / (dr ? w : 1 - w), u, flt, &us)
-        / (flt ? 1 : relax_d(dr ? KIND_DRAINE : KIND_HG, a));   /* (test_accuracy_nold) */
+    r = ref_bar_q(dr ? gd : gh, dr ? (qreal)a : 0, xq, xi / (dr ? w : 1 - w), u, flt, &us);
     if (r > fog_worst[flt]) fog_worst[flt] = r;
     ++fog_n;
     mt_check(r <= 1, "fog %s g_hg=%a g_d=%a alpha=%a w=%a xi=%a: u=%.17g u*=%.17g (%.2f x the "
@@ -664,11 +644,7 @@ int main(void)
     test_cert();
     test_cbrt();
     test_fog();
-    printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f%s, float %.3f\n",
-           n_points, worst_d, NOLD ? " (of the relaxed bound, MIST_NO_LONG_DOUBLE)" : "",
-           worst_f);
-    if (NOLD)
-        printf("test_accuracy: MIST_NO_LONG_DOUBLE: %ld decreases of double samples in "
-               "the monotonicity scans (not failed: documented)\n", nold_decreases);
+    printf("test_accuracy: %ld points; worst |u - u*| / bound: double %.3f, float %.3f\n",
+           n_points, worst_d, worst_f);
     return mt_done("test_accuracy");
 }
