@@ -2106,7 +2106,8 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 /* The Jendersie-d'Eon fog phase function [JD23 eq. 1]                      */
 /* (1 - w_d) HG(g_hg) + w_d Draine(g_d, alpha).  Sampling as the            */
 /* supplemental says: one xi picks the Draine lobe when xi < w_d, and is    */
-/* rescaled to [0, 1] and reused for the lobe.  The density (and so the pdf */
+/* rescaled to [0, 1] and reused for the lobe (near a lobe's top by its     */
+/* complement, exactly: mist__fog_pick).  The density (and so the pdf       */
 /* of a sample) is the whole mixture's, as multiple importance sampling     */
 /* needs.  The mixture sampler is exact but NOT monotone in xi.             */
 /* ======================================================================== */
