@@ -3067,8 +3067,11 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /*       origin.y not finite; length NaN or <= 0: no fog (T = 1, L = 0,     */
 /*       column 0).  scale_height +inf: uniform fog (the sun's column above */
 /*       any point is then infinite: no dimmed sun light).  Subnormal and   */
-/*       largest finite scale heights are ordinary values.  length +inf:    */
-/*       allowed.                                                           */
+/*       largest finite scale heights are ordinary values, but for one      */
+/*       corner: a scale height below 2^-916 (float 2^-78) with w s beyond  */
+/*       2^918 (float 2^80), where w s / H is far outside the range, misses */
+/*       the bar by up to ~85x (an independent check's random draws: 5 of   */
+/*       8e5 checks in double, 14 of 2e6 in float).  length +inf: allowed.  */
 /*   coefficients, sun, ambient: NaN and negative count as 0, +inf as the   */
 /*       largest finite value; an extinction below its scattering is raised */
 /*       to it (albedo <= 1).  Sums and products of them are exact to      */
@@ -3331,7 +3334,14 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
         MIST__T sc = H < tiny ? up : MIST__C(1), Hs = sc * H, f = 0, fe = 0;
         int pass;
         for (pass = 0; pass < 3; ++pass) {
-            n = MIST__FN(mist__two_sum)(sc * y, -(sc * yb), &ne);
+            /* scaled up: the exact difference first (y = yb = 2^919 with a
+             * subnormal H had overflowed sc y, and the fallback sc = 1 lost
+             * the low parts: an independent check, 8e-5 off) */
+            if (sc > MIST__C(1)) {
+                n = MIST__FN(mist__two_sum)(y, -yb, &ne);
+                n *= sc; ne *= sc;
+            } else
+                n = MIST__FN(mist__two_sum)(sc * y, -(sc * yb), &ne);
             if (t0 != MIST__C(0)) {                 /* y - yb + w t0 */
                 MIST__T d = n, de = ne;
                 p = MIST__FN(mist__two_prod)(w, sc * t0, &pe);
@@ -3538,9 +3548,18 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
                         ls[c] += MIST__FN(mist__hmul)(E[c], sR[c], pR * fz, MIST__C(1), ray.cm, ce, a)
                                + MIST__FN(mist__hmul)(E[c], sM[c], pM * fz, MIST__C(1), ray.cm, ce, a);
                     } else {
-                        MIST__T oz = -MIST__FN(mist__expm1)(-z), inu = ly / anu;     /* 1/|nu| */
-                        ls[c] += MIST__FN(mist__expmul)(E[c], sR[c], pR * oz, inu, st[c], a, MIST__C(0))
-                               + MIST__FN(mist__expmul)(E[c], sM[c], pM * oz, inu, st[c], a, MIST__C(0));
+                        /* 1/|nu| = ly/|ly - w|, a subnormal ly scaled up first
+                         * (2^(2 mant), undone by expmul_k's exponent): the quotient
+                         * was subnormal and lost its digits (an independent check:
+                         * ly = 2^-1074, 8.7% off) */
+                        int kl = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN)
+                                 ? -2 * (MIST__MB + 1) : 0;
+                        MIST__T oz = -MIST__FN(mist__expm1)(-z);
+                        MIST__T inu = MIST__FN(mist__ldexp)(ly, -kl) / anu;
+                        ls[c] += MIST__FN(mist__expmul_k)(E[c], sR[c], pR * oz, inu, st[c], a,
+                                                          MIST__C(0), kl)
+                               + MIST__FN(mist__expmul_k)(E[c], sM[c], pM * oz, inu, st[c], a,
+                                                          MIST__C(0), kl);
                     }
                 }
             }
@@ -4186,8 +4205,13 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
     if (!(s1 == s1)) s1 = MIST__C(0);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
-        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG) {
+        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG)
             tr = MIST__M(exp)(MIST__C(-0.5) * p - MIST__C(0.5) * q);
+        /* where e^-tau(1) underflows the large-argument forms below are the
+         * same integrals, with the length scaled out: in these, W1 ~ 1/p^2
+         * underflowed once k len passed 2^511 (float 2^63) though len W1 did
+         * not (an independent check: 0 for 4.7e-169) */
+        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG && tr > MIST__C(0)) {
             MIST__FN(mist__seg_w)(p, q, &w0, &w1);
             /* len s w, scaled (mist__expmul) against underflow and overflow
              * on the way; a source of each sign */
@@ -4227,14 +4251,25 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
                 f = MIST__FN(mist__dawson)(x, &g);
                 m0 = x >= MIST__C(1) ? (MIST__C(1) + g) / k0 : (rl / sd) * f;
                 m1 = g / (k0 - k1);
-            } else if (k0 > MIST__C(0)) {       /* constant */
+            } else if (k0 > MIST__C(0)) {       /* constant: len M1 = 1/(k0 p) */
                 m0 = MIST__C(1) / k0;
-                m1 = m0 / k0 / length;
+                m1 = p <= MIST__BIG ? m0 / p : m0 / k0 / length;
             } else {                            /* unreachable: p, q finite */
                 m0 = length; m1 = MIST__C(0.5) * length;
             }
             w0 = m0 - m1; w1 = m1;
             r = (s0 != MIST__C(0) ? s0 * w0 : MIST__C(0)) + (s1 != MIST__C(0) ? s1 * w1 : MIST__C(0));
+            if (!MIST__FN(mist__finite)(r)) {
+                /* a term beyond the range (+inf - inf was NaN): the sources'
+                 * exponents apart (w0, w1 < len / 745 are finite), summed
+                 * at the larger, the result rounded once into the range */
+                int e0, e1, e;
+                MIST__T f0 = MIST__FN(mist__frexp)(s0, &e0) * w0;
+                MIST__T f1 = MIST__FN(mist__frexp)(s1, &e1) * w1;
+                e = e0 > e1 ? e0 : e1;
+                r = MIST__FN(mist__ldexp)(MIST__FN(mist__ldexp)(f0, e0 - e)
+                                          + MIST__FN(mist__ldexp)(f1, e1 - e), e);
+            }
         }
     }
     if (transmittance) *transmittance = tr;

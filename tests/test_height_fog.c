@@ -914,6 +914,142 @@ static void test_segment(int is_float)
            worst[0], worst[1], (double)(clock() - t0) / CLOCKS_PER_SEC);
 }
 
+/* Long steps: k len far beyond 745 (float 104), where e^-tau(1) underflows
+ * and the step's weights are their asymptotic series (boundary layer at
+ * t = 0): len W0 = len (1/p - 1/p^2 + O(b/p^3)), len W1 = len (1/p^2 +
+ * O(b/p^4)), b = (q - p)/2, so for p >= 1e20 and |q| <= 2p the next terms
+ * are below 1e-20 relative: the reference in long double; below the
+ * smallest normal number an absolute DBL_MIN (FLT_MIN), as test_segment.  (W1 ~ 1/p^2
+ * itself underflowed past p = 2^511, float 2^63, where len W1 did not: 0
+ * against 4.7e-169; found by an independent check.) */
+static void test_segment_long(void)
+{
+    static const double ps[] = { 1e20, 1e40, 1e100, 1e160, 1e250, 1e300 };
+    static const double rs[] = { 1, 1 - 1e-9, 0.5, 0, 2 };
+    static const double lens[] = { 1e300, 1e100, 1e30 };
+    double worst = 0, worstf = 0;
+    size_t ip, ir, il;
+    for (ip = 0; ip < sizeof ps / sizeof *ps; ++ip)
+        for (ir = 0; ir < sizeof rs / sizeof *rs; ++ir)
+            for (il = 0; il < sizeof lens / sizeof *lens; ++il) {
+                double len = lens[il], k0 = ps[ip] / len, k1 = rs[ir] * k0, t, got[2];
+                float lf = (float)len, kf0 = (float)k0, kf1 = (float)k1, gf[2];
+                LD P, Q, ref[2];
+                int j;
+                if (!(k0 > 1e-300)) continue;
+#ifdef __FAST_MATH__
+                /* -ffast-math flushes subnormal intermediates (FTZ: see FAST
+                 * MATH in include/mist.h): near p = 1e300 with k1 ~ k0 the
+                 * erfcx / Dawson tail 1/(2 x^2) is one */
+                if (ps[ip] > 1e200) continue;
+#endif
+                got[0] = mist_segment_linear(k0, k1, 1, 0, len, &t);
+                got[1] = mist_segment_linear(k0, k1, 0, 1, len, &t);
+                P = (LD)k0 * len; Q = (LD)k1 * len;
+                ref[0] = len * (1 / P - 1 / (P * P));
+                ref[1] = len / (P * P);
+                for (j = 0; j < 2; ++j) {
+                    double e = (double)(fabsl(got[j] - ref[j]) / (0x1p-53 * ref[j] + DBL_MIN));
+                    if (e > worst) worst = e;
+                    mt_check(e <= SEG_BAR, "long segment double p=%g q=%g len=%g: W%d %.17g ref "
+                             "%.17Lg (%.2f eps)", (double)P, (double)Q, len, j, got[j], ref[j], e);
+                }
+                /* float: the same where it is in range, p >= 1e20 */
+                if (!(len <= FLT_MAX && kf0 >= FLT_MIN && kf0 <= FLT_MAX)) continue;
+                P = (LD)kf0 * lf; Q = (LD)kf1 * lf;
+                if (P < 1e20L) continue;
+                gf[0] = mist_segment_linearf(kf0, kf1, 1, 0, lf, (float *)0);
+                gf[1] = mist_segment_linearf(kf0, kf1, 0, 1, lf, (float *)0);
+                ref[0] = lf * (1 / P - 1 / (P * P));
+                ref[1] = lf / (P * P);
+                for (j = 0; j < 2; ++j) {
+                    double e = (double)(fabsl(gf[j] - ref[j]) / (0x1p-24 * ref[j] + FLT_MIN));
+                    if (e > worstf) worstf = e;
+                    mt_check(e <= SEG_BAR, "long segment float p=%g q=%g len=%g: W%d %.9g ref "
+                             "%.9Lg (%.2f eps)", (double)P, (double)Q, (double)lf, j, gf[j], ref[j], e);
+                }
+            }
+    {   /* float steps of k len 1e20..1e36 (len W1 down to ~1e-30) */
+        static const float kf[] = { 1e-10f, 1e-3f, 1.f, 1e3f };
+        static const float lf[] = { 1e30f, 1e33f, 1e36f };
+        size_t a, b2;
+        for (a = 0; a < 4; ++a)
+            for (b2 = 0; b2 < 3; ++b2) {
+                LD P = (LD)kf[a] * lf[b2], r1 = lf[b2] / (P * P);
+                float g1 = mist_segment_linearf(kf[a], kf[a], 0, 1, lf[b2], (float *)0);
+                double e;
+                if (P < 1e20L || r1 < FLT_MIN) continue;
+                e = (double)(fabsl(g1 - r1) / (0x1p-24 * r1));
+                if (e > worstf) worstf = e;
+                mt_check(e <= SEG_BAR, "long segment float k=%g len=%g: W1 %.9g ref %.9Lg (%.2f eps)",
+                         (double)kf[a], (double)lf[b2], g1, r1, e);
+            }
+    }
+    printf("long segments: worst %.2f eps (double), %.2f eps (float)\n", worst, worstf);
+}
+
+/* The dimmed sun at a subnormal sun height and the column of a fog whose
+ * subnormal scale height meets a huge base: 1/|nu| = ly / |ly - w| was
+ * itself subnormal and lost its digits (8.7% off at ly = 2^-1074), and
+ * y - base with y = base = 2^919 (float 2^81) overflowed once scaled up
+ * for the subnormal H (8e-5 off); both found by an independent check.
+ * References: the same quantities translated or rescaled, where they are
+ * ordinary (the column depends on y - base alone; the in-scatter with the
+ * sun at l_y is continuous in l_y, and at these l_y the dimmed sun term is
+ * E s p(u) |nu|^-1 ... ~ l_y: doubling l_y from 2^-1074 to 2^-1073 must
+ * double it to a few ulps, where it had moved by 8.7%). */
+static void test_tiny_cases(void)
+{
+#ifdef __FAST_MATH__
+    /* subnormal inputs: -ffast-math reads them as 0 (DAZ; FAST MATH in
+     * include/mist.h) */
+    printf("tiny cases: skipped under -ffast-math (subnormal inputs)\n");
+#else
+    mist_hfog f;
+    mist_hfogf ff;
+    mist_vec3 o, d;
+    mist_rgb t, l1, l2;
+    double c1, c2, w = -0x1.23456789abcdep-1, s = 0x1.fedcba9876543p-1055;
+    float cf1, cf2, wf = -0x1.234568p-1f, sf = 0x1.fedcp-135f;
+    memset(&f, 0, sizeof f);
+    f.density = 1; f.scale_height = 0x0.0000000000d3bp-1022;
+    f.base = 0x1p919;
+    c1 = mist_hfog_column(&f, 0x1p919, w, s);
+    f.base = 0;
+    c2 = mist_hfog_column(&f, 0, w, s);
+    mt_check(c2 > 0 && fabs(c1 - c2) <= 4 * 0x1p-53 * c2,
+             "column at y = base = 2^919, subnormal H: %.17g, at y = base = 0: %.17g", c1, c2);
+    memset(&ff, 0, sizeof ff);
+    ff.density = 1; ff.scale_height = 0x1.a6p-141f;
+    ff.base = 0x1p81f;
+    cf1 = mist_hfog_columnf(&ff, 0x1p81f, wf, sf);
+    ff.base = 0;
+    cf2 = mist_hfog_columnf(&ff, 0, wf, sf);
+    mt_check(cf2 > 0 && fabsf(cf1 - cf2) <= 4 * 0x1p-24f * cf2,
+             "float column at y = base = 2^81, subnormal H: %.9g, at y = base = 0: %.9g",
+             (double)cf1, (double)cf2);
+    /* dimmed sun, l_y = 2^-1074 and 2^-1073, a ray up to infinity from far
+     * below (the sun term ~ l_y there); Rayleigh only, no ambient */
+    memset(&f, 0, sizeof f);
+    f.density = 1; f.scale_height = 0x1.05009c87b9fb6p+10;
+    f.rayleigh_ext.r = 0x0.0000000000372p-1022; f.rayleigh_scat.r = 0x0.00000000001cbp-1022;
+    f.sun.r = 0x1.91e68b4e2e01fp+798;
+    f.mie_phase = mist_fog_make(0, 0, 0, 0);
+    f.sun_extinction = 1;
+    o.x = 0; o.y = -0x1.6ec389546c49p+19; o.z = 0;
+    d.x = -0x1.b0f810cec5c7ap-5; d.y = 0x1.2f2286624cfc6p-11; d.z = -0x1.ff48c811adad2p-1;
+    f.sun_dir.x = 0x1.55ea1bfad4c66p-2; f.sun_dir.y = 0x0.0000000000001p-1022;
+    f.sun_dir.z = 0x1.e29d8a97ff50ap-1;
+    mist_hfog_eval(&f, o, d, INFINITY, &t, &l1);
+    f.sun_dir.y = 0x0.0000000000002p-1022;
+    mist_hfog_eval(&f, o, d, INFINITY, &t, &l2);
+    /* 1e-12: far above the ~20 roundings in each (4e-15), far below what
+     * the subnormal quotient cost (2.7e-4 here, 8.7% at worst) */
+    mt_check(l1.r > 0 && fabs(l2.r - 2 * l1.r) <= 1e-12 * l2.r,
+             "dimmed sun ~ l_y at l_y = 2^-1074, 2^-1073: %.17g, %.17g", l1.r, l2.r);
+#endif
+}
+
 /* ------------------------------------------------------------------------ */
 /* Bad input: the documented results (section comment in include/mist.h)   */
 /* ------------------------------------------------------------------------ */
@@ -1207,7 +1343,8 @@ int main(int argc, char **argv)
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); }
     if (want(argc, argv, "layers")) test_layers();
-    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); }
+    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long(); }
+    if (want(argc, argv, "tiny")) test_tiny_cases();
     if (want(argc, argv, "bad")) test_bad();
     if (want(argc, argv, "expm1")) { test_expm1(); test_frexp_ldexp(); }
     return mt_done("test_height_fog");
