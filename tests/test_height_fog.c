@@ -922,6 +922,30 @@ static void test_segment(int is_float)
  * smallest normal number an absolute DBL_MIN (FLT_MIN), as test_segment.  (W1 ~ 1/p^2
  * itself underflowed past p = 2^511, float 2^63, where len W1 did not: 0
  * against 4.7e-169; found by an independent check.) */
+/* one long step's two weights (W0: s = (1, 0), W1: s = (0, 1)) in double
+ * (flt = 0) or float against the series at p = k0 len; updates *worst */
+static void long_step(int flt, double k0, double k1, double len, double *worst)
+{
+    LD P = (LD)k0 * len, Q = (LD)k1 * len, ref[2];
+    double got[2], t, eps = flt ? 0x1p-24 : 0x1p-53, tmin = flt ? FLT_MIN : DBL_MIN;
+    int j;
+    if (flt) {
+        got[0] = mist_segment_linearf((float)k0, (float)k1, 1, 0, (float)len, (float *)0);
+        got[1] = mist_segment_linearf((float)k0, (float)k1, 0, 1, (float)len, (float *)0);
+    } else {
+        got[0] = mist_segment_linear(k0, k1, 1, 0, len, &t);
+        got[1] = mist_segment_linear(k0, k1, 0, 1, len, &t);
+    }
+    ref[0] = len * (1 / P - 1 / (P * P));
+    ref[1] = len / (P * P);
+    for (j = 0; j < 2; ++j) {
+        double e = (double)(fabsl(got[j] - ref[j]) / (eps * ref[j] + tmin));
+        if (e > *worst) *worst = e;
+        mt_check(e <= SEG_BAR, "long segment %s p=%g q=%g len=%g: W%d %.17g ref %.17Lg (%.2f eps)",
+                 flt ? "float" : "double", (double)P, (double)Q, len, j, got[j], ref[j], e);
+    }
+}
+
 static void test_segment_long(void)
 {
     static const double ps[] = { 1e20, 1e40, 1e100, 1e160, 1e250, 1e300 };
@@ -932,10 +956,8 @@ static void test_segment_long(void)
     for (ip = 0; ip < sizeof ps / sizeof *ps; ++ip)
         for (ir = 0; ir < sizeof rs / sizeof *rs; ++ir)
             for (il = 0; il < sizeof lens / sizeof *lens; ++il) {
-                double len = lens[il], k0 = ps[ip] / len, k1 = rs[ir] * k0, t, got[2];
-                float lf = (float)len, kf0 = (float)k0, kf1 = (float)k1, gf[2];
-                LD P, Q, ref[2];
-                int j;
+                double len = lens[il], k0 = ps[ip] / len, k1 = rs[ir] * k0;
+                float lf = (float)len, kf0 = (float)k0, kf1 = (float)k1;
                 if (!(k0 > 1e-300)) continue;
 #ifdef __FAST_MATH__
                 /* -ffast-math flushes subnormal intermediates (FTZ: see FAST
@@ -943,31 +965,10 @@ static void test_segment_long(void)
                  * erfcx / Dawson tail 1/(2 x^2) is one */
                 if (ps[ip] > 1e200) continue;
 #endif
-                got[0] = mist_segment_linear(k0, k1, 1, 0, len, &t);
-                got[1] = mist_segment_linear(k0, k1, 0, 1, len, &t);
-                P = (LD)k0 * len; Q = (LD)k1 * len;
-                ref[0] = len * (1 / P - 1 / (P * P));
-                ref[1] = len / (P * P);
-                for (j = 0; j < 2; ++j) {
-                    double e = (double)(fabsl(got[j] - ref[j]) / (0x1p-53 * ref[j] + DBL_MIN));
-                    if (e > worst) worst = e;
-                    mt_check(e <= SEG_BAR, "long segment double p=%g q=%g len=%g: W%d %.17g ref "
-                             "%.17Lg (%.2f eps)", (double)P, (double)Q, len, j, got[j], ref[j], e);
-                }
+                long_step(0, k0, k1, len, &worst);
                 /* float: the same where it is in range, p >= 1e20 */
-                if (!(len <= FLT_MAX && kf0 >= FLT_MIN && kf0 <= FLT_MAX)) continue;
-                P = (LD)kf0 * lf; Q = (LD)kf1 * lf;
-                if (P < 1e20L) continue;
-                gf[0] = mist_segment_linearf(kf0, kf1, 1, 0, lf, (float *)0);
-                gf[1] = mist_segment_linearf(kf0, kf1, 0, 1, lf, (float *)0);
-                ref[0] = lf * (1 / P - 1 / (P * P));
-                ref[1] = lf / (P * P);
-                for (j = 0; j < 2; ++j) {
-                    double e = (double)(fabsl(gf[j] - ref[j]) / (0x1p-24 * ref[j] + FLT_MIN));
-                    if (e > worstf) worstf = e;
-                    mt_check(e <= SEG_BAR, "long segment float p=%g q=%g len=%g: W%d %.9g ref "
-                             "%.9Lg (%.2f eps)", (double)P, (double)Q, (double)lf, j, gf[j], ref[j], e);
-                }
+                if (len <= FLT_MAX && kf0 >= FLT_MIN && kf0 <= FLT_MAX && (LD)kf0 * lf >= 1e20L)
+                    long_step(1, kf0, kf1, lf, &worstf);
             }
     {   /* float steps of k len 1e20..1e36 (len W1 down to ~1e-30) */
         static const float kf[] = { 1e-10f, 1e-3f, 1.f, 1e3f };
@@ -1006,28 +1007,29 @@ static void test_tiny_cases(void)
     printf("tiny cases: skipped under -ffast-math (subnormal inputs)\n");
 #else
     mist_hfog f;
-    mist_hfogf ff;
     mist_vec3 o, d;
     mist_rgb t, l1, l2;
-    double c1, c2, w = -0x1.23456789abcdep-1, s = 0x1.fedcba9876543p-1055;
-    float cf1, cf2, wf = -0x1.234568p-1f, sf = 0x1.fedcp-135f;
-    memset(&f, 0, sizeof f);
-    f.density = 1; f.scale_height = 0x0.0000000000d3bp-1022;
-    f.base = 0x1p919;
-    c1 = mist_hfog_column(&f, 0x1p919, w, s);
-    f.base = 0;
-    c2 = mist_hfog_column(&f, 0, w, s);
-    mt_check(c2 > 0 && fabs(c1 - c2) <= 4 * 0x1p-53 * c2,
-             "column at y = base = 2^919, subnormal H: %.17g, at y = base = 0: %.17g", c1, c2);
-    memset(&ff, 0, sizeof ff);
-    ff.density = 1; ff.scale_height = 0x1.a6p-141f;
-    ff.base = 0x1p81f;
-    cf1 = mist_hfog_columnf(&ff, 0x1p81f, wf, sf);
-    ff.base = 0;
-    cf2 = mist_hfog_columnf(&ff, 0, wf, sf);
-    mt_check(cf2 > 0 && fabsf(cf1 - cf2) <= 4 * 0x1p-24f * cf2,
-             "float column at y = base = 2^81, subnormal H: %.9g, at y = base = 0: %.9g",
-             (double)cf1, (double)cf2);
+    /* the column at y = base = Y and at y = base = 0, in type T (suffix S),
+     * within 4 eps of each other */
+#define TINY_CAT_(a, b) a##b
+#define TINY_CAT(a, b) TINY_CAT_(a, b)
+#define TINY_COLUMN(T, S, H, Y, W, LEN, EPS)                                        \
+    {   TINY_CAT(mist_hfog, S) g;                                                          \
+        T c1, c2;                                                                     \
+        memset(&g, 0, sizeof g);                                                      \
+        g.density = 1; g.scale_height = H; g.base = Y;                                \
+        c1 = TINY_CAT(mist_hfog_column, S)(&g, Y, W, LEN);                                 \
+        g.base = 0;                                                                   \
+        c2 = TINY_CAT(mist_hfog_column, S)(&g, 0, W, LEN);                                 \
+        mt_check(c2 > 0 && fabs((double)c1 - (double)c2) <= 4 * EPS * (double)c2,     \
+                 "column (" #T ") at y = base = %a, subnormal H: %.17g, at y = base = 0: " \
+                 "%.17g", (double)(Y), (double)c1, (double)c2); }
+    TINY_COLUMN(double, , 0x0.0000000000d3bp-1022, 0x1p919, -0x1.23456789abcdep-1,
+                0x1.fedcba9876543p-1055, 0x1p-53)
+    TINY_COLUMN(float, f, 0x1.a6p-141f, 0x1p81f, -0x1.234568p-1f, 0x1.fedcp-135f, 0x1p-24)
+#undef TINY_COLUMN
+#undef TINY_CAT
+#undef TINY_CAT_
     /* dimmed sun, l_y = 2^-1074 and 2^-1073, a ray up to infinity from far
      * below (the sun term ~ l_y there); Rayleigh only, no ambient */
     memset(&f, 0, sizeof f);
