@@ -3672,6 +3672,8 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                                            &sx[k][c]);
         H[k] = layers[k].scale_height;
         d0[k] = MIST__FN(mist__pos)(layers[k].density);
+        memset(&seg[k], 0, sizeof seg[k]);   /* (both read only where ok[k]: */
+        lnd[k] = MIST__C(0);                 /* gcc 12 -O3 -Wall could not tell) */
         if (!ok[k]) continue;
         lnd[k] = MIST__M(log)(d0[k]);
         if (H[k] != H[0]) same = 0;
@@ -3771,7 +3773,9 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                 MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2], ls0 = ls[c];
                 int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0;
                 for (k = 0; k < n; ++k) {
-                    wk[k] = MIST__C(0);
+                    wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = MIST__C(0);   /* (set below
+                                             * where used: gcc 12 -O2/-O3 -Wall
+                                             * could not tell) */
                     ke[k] = 0;
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
                     /* the layer's optical depth over the piece, scaled
@@ -3914,17 +3918,24 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     MIST__T z = unb ? (MIST__T)INFINITY
                               : MIST__FN(mist__expmul_k)(wsum, anu, MIST__C(1), MIST__C(1), ly,
                                                          MIST__C(0), MIST__C(0), emax);
+                    /* 1/|nu| = ly/|ly - w| with a subnormal ly scaled up (as
+                     * in mist_hfog_eval; was 2.6e-4 off at ly = 2^-1074,
+                     * against a reported bound of 4e-15) */
+                    int kl = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN)
+                             ? -2 * (MIST__MB + 1) : 0;
+                    MIST__T lys = MIST__FN(mist__ldexp)(ly, -kl);
                     if (!(el > MIST__C(0))) gs = MIST__C(0);
                     else if (!unb)
                         gs = z < MIST__C(1) ? dtau * MIST__FN(mist__phi1)(z)
-                                            : -MIST__FN(mist__expm1)(-z) * (ly / anu);
-                    else gs = anu > MIST__C(0) ? ly / anu : MIST__C(0);
+                                            : -MIST__FN(mist__expm1)(-z) * (lys / anu);
+                    else gs = anu > MIST__C(0) ? lys / anu : MIST__C(0);
                     if (fsun > MIST__C(0) && el > MIST__C(0) && (gs > MIST__C(0) || !unb)) {
                         /* scaled as above where dtau |nu| < 1 */
                         MIST__T v = !unb && z < MIST__C(1)
                             ? MIST__FN(mist__expmul_k)(fsun, el, wsum, MIST__FN(mist__phi1)(z),
                                                        MIST__C(1), MIST__C(0), MIST__C(0), emax)
-                            : fsun * el * gs;
+                            : MIST__FN(mist__expmul_k)(fsun, el, gs, MIST__C(1), MIST__C(1),
+                                                       MIST__C(0), MIST__C(0), kl);
                         ls[c] += v;
                         rnd[c] += v * plo;
                     }

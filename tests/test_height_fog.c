@@ -1049,6 +1049,15 @@ static void test_tiny_cases(void)
      * the subnormal quotient cost (2.7e-4 here, 8.7% at worst) */
     mt_check(l1.r > 0 && fabs(l2.r - 2 * l1.r) <= 1e-12 * l2.r,
              "dimmed sun ~ l_y at l_y = 2^-1074, 2^-1073: %.17g, %.17g", l1.r, l2.r);
+    {   /* mist_hfog_layers_eval with this one layer: the same in-scatter
+         * within the bound it reports plus a few eps (it had the same
+         * subnormal quotient: 2.6e-4 off against a bound of 4e-15) */
+        mist_rgb lt, ll, lb;
+        mist_hfog_layers_eval(&f, 1, o, d, INFINITY, 8, &lt, &ll, &lb);
+        mt_check(fabs(ll.r - l2.r) <= lb.r + 16 * 0x1p-53 * l2.r,
+                 "layers at l_y = 2^-1073: %.17g, one layer's closed form %.17g, bound %.3g",
+                 ll.r, l2.r, lb.r);
+    }
 #endif
 }
 
