@@ -3281,6 +3281,16 @@ MIST__F MIST__T MIST__FN(mist__hmul)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T
     return MIST__FN(mist__expmul_k)(c1, c2, c3, m, d, x, MIST__C(0), e);
 }
 
+/* The sun's height ly as m 2^*k with m normal: a subnormal ly scaled up by
+ * 2^(2 mant) (1/|nu| = ly/|ly - w| of the dimmed sun was a subnormal
+ * quotient and lost its digits: 8.7% off at ly = 2^-1074, found by an
+ * independent check); *k goes to mist__expmul_k's exponent. */
+MIST__F MIST__T MIST__FN(mist__hly)(MIST__T ly, int *k)
+{
+    *k = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN) ? -2 * (MIST__MB + 1) : 0;
+    return MIST__FN(mist__ldexp)(ly, -*k);
+}
+
 /* The sun's optical depth to a point of density m 2^e: st m 2^e H / ly
  * (the column above it along the sun), +inf in a uniform fog (H = +inf:
  * the column above never ends). */
@@ -3548,14 +3558,10 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
                         ls[c] += MIST__FN(mist__hmul)(E[c], sR[c], pR * fz, MIST__C(1), ray.cm, ce, a)
                                + MIST__FN(mist__hmul)(E[c], sM[c], pM * fz, MIST__C(1), ray.cm, ce, a);
                     } else {
-                        /* 1/|nu| = ly/|ly - w|, a subnormal ly scaled up first
-                         * (2^(2 mant), undone by expmul_k's exponent): the quotient
-                         * was subnormal and lost its digits (an independent check:
-                         * ly = 2^-1074, 8.7% off) */
-                        int kl = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN)
-                                 ? -2 * (MIST__MB + 1) : 0;
+                        /* 1/|nu| = ly/|ly - w|, ly scaled (mist__hly) */
+                        int kl;
                         MIST__T oz = -MIST__FN(mist__expm1)(-z);
-                        MIST__T inu = MIST__FN(mist__ldexp)(ly, -kl) / anu;
+                        MIST__T inu = MIST__FN(mist__hly)(ly, &kl) / anu;
                         ls[c] += MIST__FN(mist__expmul_k)(E[c], sR[c], pR * oz, inu, st[c], a,
                                                           MIST__C(0), kl)
                                + MIST__FN(mist__expmul_k)(E[c], sM[c], pM * oz, inu, st[c], a,
@@ -3918,12 +3924,11 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     MIST__T z = unb ? (MIST__T)INFINITY
                               : MIST__FN(mist__expmul_k)(wsum, anu, MIST__C(1), MIST__C(1), ly,
                                                          MIST__C(0), MIST__C(0), emax);
-                    /* 1/|nu| = ly/|ly - w| with a subnormal ly scaled up (as
-                     * in mist_hfog_eval; was 2.6e-4 off at ly = 2^-1074,
-                     * against a reported bound of 4e-15) */
-                    int kl = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN)
-                             ? -2 * (MIST__MB + 1) : 0;
-                    MIST__T lys = MIST__FN(mist__ldexp)(ly, -kl);
+                    /* 1/|nu| = ly/|ly - w|, ly scaled (mist__hly; unscaled it
+                     * was 2.6e-4 off at ly = 2^-1074, against a reported
+                     * bound of 4e-15) */
+                    int kl;
+                    MIST__T lys = MIST__FN(mist__hly)(ly, &kl);
                     if (!(el > MIST__C(0))) gs = MIST__C(0);
                     else if (!unb)
                         gs = z < MIST__C(1) ? dtau * MIST__FN(mist__phi1)(z)
@@ -4216,13 +4221,13 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
     if (!(s1 == s1)) s1 = MIST__C(0);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
-        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG)
-            tr = MIST__M(exp)(MIST__C(-0.5) * p - MIST__C(0.5) * q);
+        tr = length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG
+             ? MIST__M(exp)(MIST__C(-0.5) * p - MIST__C(0.5) * q) : MIST__C(0);
         /* where e^-tau(1) underflows the large-argument forms below are the
          * same integrals, with the length scaled out: in these, W1 ~ 1/p^2
          * underflowed once k len passed 2^511 (float 2^63) though len W1 did
          * not (an independent check: 0 for 4.7e-169) */
-        if (length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG && tr > MIST__C(0)) {
+        if (tr > MIST__C(0)) {
             MIST__FN(mist__seg_w)(p, q, &w0, &w1);
             /* len s w, scaled (mist__expmul) against underflow and overflow
              * on the way; a source of each sign */
