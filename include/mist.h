@@ -553,6 +553,8 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #define MIST__FN(n) n
 #define MIST__M(fn) fn
 #define MIST__EPS   (DBL_EPSILON * 0.5)       /* unit roundoff 2^-53 */
+#define MIST__DBL   1                         /* the double pass (an int: no float
+                                                 compared with a double) */
 #define MIST__MAXIT 64                        /* bisection worst case: 2^-60 */
 #define MIST__V3    mist_vec3
 #define MIST__FOG   mist_fog
@@ -573,6 +575,7 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #undef MIST__FN
 #undef MIST__M
 #undef MIST__EPS
+#undef MIST__DBL
 #undef MIST__MAXIT
 #undef MIST__V3
 #undef MIST__FOG
@@ -587,6 +590,7 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #define MIST__FN(n) n##f
 #define MIST__M(fn) fn##f
 #define MIST__EPS   (FLT_EPSILON * 0.5f)      /* unit roundoff 2^-24 */
+#define MIST__DBL   0
 #define MIST__MAXIT 32
 #define MIST__V3    mist_vec3f
 #define MIST__FOG   mist_fogf
@@ -605,6 +609,7 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #undef MIST__FN
 #undef MIST__M
 #undef MIST__EPS
+#undef MIST__DBL
 #undef MIST__MAXIT
 #undef MIST__V3
 #undef MIST__FOG
@@ -697,7 +702,7 @@ MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
 /* Error-free transformations (the height fog's compensated sums, the double
  * HG and Rayleigh samplers in double-double). */
 /* the largest finite T */
-#define MIST__BIG   ((MIST__T)(MIST__EPS < 1e-10 ? DBL_MAX : FLT_MAX))
+#define MIST__BIG   ((MIST__T)(MIST__DBL ? DBL_MAX : (double)FLT_MAX))
 
 /* s + *e = a + b exactly where |a| >= |b| (or a = 0; Dekker's Fast2Sum). */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__fast_two_sum)(MIST__T a, MIST__T b, MIST__T *e)
@@ -727,9 +732,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__two_prod)(MIST__T a, MIST__T b, MIST__T
      * large that k a overflows is scaled down by 2^32 (2^16) first and
      * the low part back up, exactly (found by the fuzzer: a float column
      * whose whole exponent was in the low part became NaN, then 0) */
-    const MIST__T k = (MIST__T)(MIST__EPS < 1e-10 ? 134217729.0 : 4097.0);
+    const MIST__T k = (MIST__T)(MIST__DBL ? 134217729.0 : 4097.0);
     const MIST__T lim = MIST__BIG / (k + k);
-    const MIST__T dn = (MIST__T)(MIST__EPS < 1e-10 ? 1.0 / 4294967296.0 : 1.0 / 65536.0);
+    const MIST__T dn = (MIST__T)(MIST__DBL ? 1.0 / 4294967296.0 : 1.0 / 65536.0);
     MIST__T c, ah, al, d, bh, bl, ps, sc = MIST__C(1);
     if (!(a <= lim && a >= -lim)) { a *= dn; sc /= dn; }
     if (!(b <= lim && b >= -lim)) { b *= dn; sc /= dn; }
@@ -1853,8 +1858,8 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
 #ifdef MIST__W
     MIST__WFN(mist__draine_c)((MIST__W)alpha, &c0w, &c1w);
     if (f0) t0w = ((MIST__W)f0[0] - (MIST__W)x) + (MIST__W)f0[1];
-    if (MIST__EPS > 1e-10) {                    /* float: all in double */
-        uw = st;
+    if (!MIST__DBL) {                           /* float: all in double */
+        uw = (MIST__W)st;
         MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                        (MIST__W)MIST__EPS / 64, 2 * MIST__MAXIT, &uw);
         return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
@@ -1862,7 +1867,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     }
     /* double: from eq. 6 straight to the wide steps (one usually lands);
      * from the table or HG first in T to its noise (long double is slower) */
-    uw = st;
+    uw = (MIST__W)st;
     if (good == 2
         && MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                           (MIST__W)MIST__EPS / 64, 6, &uw))
@@ -1877,7 +1882,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     if (MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, u, &st)) return st;
 #endif
 #ifdef MIST__W
-    uw = u;
+    uw = (MIST__W)u;
     MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
                                    (MIST__W)MIST__EPS / 64, MIST__MAXIT, &uw);
     u = MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
@@ -1925,7 +1930,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
         int ok;
         MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = *st;
         kb = tab[2 * MIST__PHASE_K + 2 + j];
-        if (MIST__EPS < 1e-10) {
+        if (MIST__DBL) {
             MIST__T et;
             ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, *st, kb,
                                              MIST__C(0), &ok, &et);
@@ -1936,7 +1941,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 #endif
 #ifdef MIST__W
         {
-            MIST__W uw = us, eb;            /* weights (1, alpha): exact */
+            MIST__W uw = (MIST__W)us, eb;   /* weights (1, alpha): exact */
             int k;
             for (k = 0; k < 2; ++k) {
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
@@ -1948,7 +1953,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
                         MIST__FN(mist__draine_win)(uw, eb));
                     return 1;
                 }
-                if (!(uw >= tab[j] && uw <= tab[j + 1])) break;
+                if (!(uw >= (MIST__W)tab[j] && uw <= (MIST__W)tab[j + 1])) break;
             }
         }
 #endif
@@ -1984,7 +1989,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                   MIST__W ud, MIST__W k)
 {
-    MIST__W aw = alpha, mg = (MIST__W)1 / 70368744177664.0;   /* 2^-46 */
+    MIST__W aw = (MIST__W)alpha, mg = (MIST__W)1 / 70368744177664.0;   /* 2^-46 */
     MIST__W r, sc, fs, hi, ho, h, v2, ag, ar;
     MIST__T uf = (MIST__T)ud, fi, fo;
     uint32_t b, bi, bo;
@@ -1993,8 +1998,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     bi = b - 1u; bo = b + 1u;                  /* the neighbours towards 0, away */
     memcpy(&fi, &bi, sizeof fi);
     memcpy(&fo, &bo, sizeof fo);
-    hi = MIST__WFN(mist__abs)(ud - (MIST__W)0.5 * ((MIST__W)uf + fi));
-    ho = MIST__WFN(mist__abs)(ud - (MIST__W)0.5 * ((MIST__W)uf + fo));
+    hi = MIST__WFN(mist__abs)(ud - (MIST__W)0.5 * ((MIST__W)uf + (MIST__W)fi));
+    ho = MIST__WFN(mist__abs)(ud - (MIST__W)0.5 * ((MIST__W)uf + (MIST__W)fo));
     h = hi < ho ? hi : ho;
     r = MIST__WFN(mist__draine_res)((MIST__W)g, 1, aw, (MIST__W)xi, ud, &sc, &fs);
     v2 = MIST__WFN(mist__v2)((MIST__W)g, ud);
@@ -2022,7 +2027,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_try6)(MIST__T g, MIST__T alpha, MIST
     if (!(ag >= MIST__C(1e-3) && ag <= MIST__C(0.9999) && alpha >= MIST__C(1e-6)
           && alpha <= MIST__C(1e4) && x > MIST__C(0)))
         return 0;
-    ud = sg * (MIST__W)mist__draine_eq6((double)(sg * g), (double)alpha, (double)x);
+    ud = sg * (MIST__W)mist__draine_eq6((double)sg * (double)g, (double)alpha, (double)x);
     *st = (MIST__T)ud;
     *u = *st;
     return MIST__FN(mist__draine_cert)(g, alpha, xi, ud, (MIST__W)0.7);
@@ -2093,7 +2098,7 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 #if defined(MIST__DD)
     u = MIST__FN(mist__rayleigh_udd)(xi);
 #elif defined(MIST__W)   /* in the wide type */
-    u = (MIST__T)MIST__WFN(mist__rayleigh_u)((MIST__W)xi, MIST__EPS > 1e-10);
+    u = (MIST__T)MIST__WFN(mist__rayleigh_u)((MIST__W)xi, !MIST__DBL);
 #else
     u = MIST__FN(mist__rayleigh_u)(xi, 0);
 #endif
@@ -2516,7 +2521,7 @@ MIST__F MIST__T MIST__FN(mist__pow2inv)(MIST__T m)
 MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
 {
 #if defined(MIST__W_EXACT)
-    MIST__W x = v.x, y = v.y, z = v.z, d = x * x + y * y + z * z, il;
+    MIST__W x = (MIST__W)v.x, y = (MIST__W)v.y, z = (MIST__W)v.z, d = x * x + y * y + z * z, il;
     if (!(d > 0 && d < 1e300)) {                         /* 0, NaN, inf */
         v.x = MIST__C(0); v.y = MIST__C(0); v.z = MIST__C(1);
         return v;
@@ -2776,7 +2781,7 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
     MIST__T z = z0, one = z + 1;
     MIST__BLOCKS(MIST__W x = (MIST__W)MIST__FN(mist__clamp01)(x_[j_], z, one);
                  y_[j_] = MIST__FN(mist__clamp11)((MIST__T)MIST__WFN(mist__rayleigh_u)(x,
-                                                   MIST__EPS > 1e-10)))
+                                                   !MIST__DBL)))
 #elif defined(MIST__DDV)
     volatile MIST__T z0 = 0;
     MIST__T z = z0, one = z + 1;
@@ -2917,7 +2922,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);   /* as above */
             MIST__W uw = u1[j_];
             int k = MIST__FN(mist__phase_k)(xi);
-            if (f_[j_] == 2 && !(uw >= tab[k] && uw <= tab[k + 1])) {
+            if (f_[j_] == 2 && !(uw >= (MIST__W)tab[k] && uw <= (MIST__W)tab[k + 1])) {
                 out[i_ + j_] = MIST__FN(mist_phase_sample)(p, x_[j_]);   /* no second step */
             } else {
                 q.at[q.m] = i_ + j_; q.xi[q.m] = xi; q.u[q.m] = uw; q.eb[q.m] = e1[j_];
@@ -3100,7 +3105,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 #define MIST__HFOG  MIST__FN(mist_hfog)
 #define MIST__HRAY  MIST__FN(mist__hray)
 /* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
-#define MIST__XLIM  MIST__C(MIST__EPS < 1e-10 ? 700 : 85)
+#define MIST__XLIM  MIST__C(MIST__DBL ? 700 : 85)
 
 /* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
 MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
@@ -3245,7 +3250,7 @@ MIST__F MIST__T MIST__FN(mist__expmul_s)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
 MIST__F MIST__T MIST__FN(mist__expmul_k)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
                                          MIST__T d, MIST__T xh, MIST__T xl, int k0)
 {
-    const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
+    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
     MIST__T r;
     int k;
     if (k0 == 0 && xh > -MIST__XLIM && xh < MIST__XLIM && c1 > MIST__C(0) && c2 > MIST__C(0)
@@ -3287,7 +3292,7 @@ MIST__F MIST__T MIST__FN(mist__hmul)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T
  * independent check); *k goes to mist__expmul_k's exponent. */
 MIST__F MIST__T MIST__FN(mist__hly)(MIST__T ly, int *k)
 {
-    *k = ly < (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN) ? -2 * (MIST__MB + 1) : 0;
+    *k = ly < (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN) ? -2 * (MIST__MB + 1) : 0;
     return MIST__FN(mist__ldexp)(ly, -*k);
 }
 
@@ -3317,7 +3322,7 @@ typedef struct MIST__HRAY {
 MIST__F MIST__T MIST__FN(mist__expmul_f)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
                                          MIST__T d, MIST__T xh, MIST__T xl, int *k)
 {
-    const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
+    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
     MIST__T r = MIST__FN(mist__expmul)(c1, c2, c3, c4, d, xh, xl);
     if (r >= tmin && r <= MIST__BIG) return MIST__FN(mist__frexp)(r, k);
     return MIST__FN(mist__expmul_s)(c1, c2, c3, c4, d, xh, xl, 0, k);
@@ -3340,7 +3345,7 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
          * divided by H); by 1/2 where a sum overflows though its terms do
          * not.  The quotients stay. */
         const MIST__T up = MIST__C(1) / (MIST__EPS * MIST__EPS);
-        const MIST__T tiny = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN) * up;
+        const MIST__T tiny = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN) * up;
         MIST__T sc = H < tiny ? up : MIST__C(1), Hs = sc * H, f = 0, fe = 0;
         int pass;
         for (pass = 0; pass < 3; ++pass) {
@@ -3621,7 +3626,7 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
                                      const MIST__T *H, const MIST__T *lnd, int k, int i, int c,
                                      MIST__T yy, MIST__T *err)
 {
-    const MIST__T tmin = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN : FLT_MIN);
+    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
     MIST__T ik = H[k] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[k]) : MIST__C(0);
     MIST__T ii = H[i] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[i]) : MIST__C(0), x, lr, q, r;
     x = ik == ii ? MIST__C(0) : (yy - ls[k].base) * (ik - ii);
@@ -3873,12 +3878,12 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     /* below 1, 1 - e^-dtau = dtau phi1(dtau) with dtau =
                      * wsum 2^emax (the shares' scale): one scaled product,
                      * right where dtau or the term is subnormal */
-                    MIST__T v = !unb && dtau < MIST__C(1)
+                    MIST__T lv = !unb && dtau < MIST__C(1)
                         ? MIST__FN(mist__expmul_k)(famb, gj, wsum, MIST__FN(mist__phi1)(dtau),
                                                    MIST__C(1), MIST__C(0), MIST__C(0), emax)
                         : famb * gj * om;
-                    ls[c] += v;
-                    rnd[c] += v * tj[c];
+                    ls[c] += lv;
+                    rnd[c] += lv * tj[c];
                 }
                 /* Bound: the piece's estimate takes each layer's share f_i of
                  * the extinction as constant; F = sum c_i f_i varies by at
@@ -3936,13 +3941,13 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     else gs = anu > MIST__C(0) ? lys / anu : MIST__C(0);
                     if (fsun > MIST__C(0) && el > MIST__C(0) && (gs > MIST__C(0) || !unb)) {
                         /* scaled as above where dtau |nu| < 1 */
-                        MIST__T v = !unb && z < MIST__C(1)
+                        MIST__T lv = !unb && z < MIST__C(1)
                             ? MIST__FN(mist__expmul_k)(fsun, el, wsum, MIST__FN(mist__phi1)(z),
                                                        MIST__C(1), MIST__C(0), MIST__C(0), emax)
                             : MIST__FN(mist__expmul_k)(fsun, el, gs, MIST__C(1), MIST__C(1),
                                                        MIST__C(0), MIST__C(0), kl);
-                        ls[c] += v;
-                        rnd[c] += v * plo;
+                        ls[c] += lv;
+                        rnd[c] += lv * plo;
                     }
                     fac = MIST__C(0.25) * dtau;              /* min(1/|nu|, dtau/4) */
                     if (anu * fac > ly) fac = ly / anu;
@@ -3960,8 +3965,8 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
         for (c = 0; c < 3; ++c) {
             /* (and below the normal range each of the ~2 n + 8 roundings
              * of a piece loses up to the smallest subnormal, absolutely) */
-            const MIST__T tsub = (MIST__T)(MIST__EPS < 1e-10 ? DBL_MIN * DBL_EPSILON
-                                                             : FLT_MIN * FLT_EPSILON);
+            const MIST__T tsub = (MIST__T)(MIST__DBL ? DBL_MIN * DBL_EPSILON
+                                                     : (double)(FLT_MIN * FLT_EPSILON));
             bd[c] = bd[c] * (MIST__C(1) + MIST__C(64) * MIST__EPS)
                   + MIST__C(4) * (MIST__T)(np + 8) * MIST__EPS * ls[c] + MIST__C(8) * MIST__EPS * rnd[c]
                   + (MIST__T)(np * (2 * n + 8)) * tsub;
@@ -3988,7 +3993,7 @@ MIST__F MIST__T MIST__FN(mist__cheb)(const double *c, int n, MIST__T u)
 }
 
 #define MIST__SQRTPI 1.77245385090551602729816748334114518
-#define MIST__NC(nd, nf) (MIST__EPS < 1e-10 ? (nd) : (nf))
+#define MIST__NC(nd, nf) (MIST__DBL ? (nd) : (nf))
 
 /* erfcx(x) = e^(x^2) erfc(x) and *g = G(x) = 1 - sqrt(pi) x erfcx(x), both
  * to relative precision, for x >= 0 (+inf too).  Piecewise Chebyshev series

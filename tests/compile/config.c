@@ -44,7 +44,7 @@ static double always(double x)
     mist_vec3f vf = { 0, 0, 2 };
     float xf = (float)x;
     return mist_hg_eval(0.5, x) + mist_hg_sample(0.5, x) + mist_normalize(v).z
-         + mist_hg_evalf(0.5f, xf) + mist_hg_samplef(0.5f, xf) + mist_normalizef(vf).z;
+         + (double)(mist_hg_evalf(0.5f, xf) + mist_hg_samplef(0.5f, xf) + mist_normalizef(vf).z);
 }
 
 /* ---- Draine and Cornette-Shanks ------------------------------------------ */
@@ -61,8 +61,8 @@ static double draine(double x)
     float xf = (float)x;
     return mist_draine_eval(0.5, 2.0, x) + mist_draine_sample(0.5, 2.0, x)
          + mist_cs_eval(0.5, x) + mist_cs_sample(0.5, x)
-         + mist_draine_evalf(0.5f, 2.0f, xf) + mist_draine_samplef(0.5f, 2.0f, xf)
-         + mist_cs_evalf(0.5f, xf) + mist_cs_samplef(0.5f, xf);
+         + (double)(mist_draine_evalf(0.5f, 2.0f, xf) + mist_draine_samplef(0.5f, 2.0f, xf)
+                    + mist_cs_evalf(0.5f, xf) + mist_cs_samplef(0.5f, xf));
 }
 #endif
 
@@ -77,7 +77,7 @@ static double rayleigh(double x) { (void)x; return 0 RAYLEIGH_NAMES(USE); }
 static double rayleigh(double x)
 {
     return mist_rayleigh_eval(x) + mist_rayleigh_sample(x)
-         + mist_rayleigh_evalf((float)x) + mist_rayleigh_samplef((float)x);
+         + (double)(mist_rayleigh_evalf((float)x) + mist_rayleigh_samplef((float)x));
 }
 #endif
 
@@ -95,8 +95,8 @@ static double fog(double x)
     mist_fogf ff = mist_fog_makef(0.9f, 0.5f, 20.0f, 0.4f);
     mist_phasef ph = mist_phase_hgf(0.5f);
     return mist_fog_eval(f, x) + mist_fog_sample(f, x)
-         + mist_fog_evalf(ff, (float)x) + mist_fog_samplef(ff, (float)x)
-         + mist_phase_evalf(&ph, (float)x) + mist_phase_samplef(&ph, (float)x);
+         + (double)(mist_fog_evalf(ff, (float)x) + mist_fog_samplef(ff, (float)x)
+                    + mist_phase_evalf(&ph, (float)x) + mist_phase_samplef(&ph, (float)x));
 }
 #endif
 
@@ -113,7 +113,7 @@ static double hfog(double x)
     double t = 0;
     float tf = 0;
     return mist_segment_linear(1.0, 2.0, 0.5, 0.5, x, &t) + t
-         + mist_segment_linearf(1.0f, 2.0f, 0.5f, 0.5f, (float)x, &tf) + tf;
+         + (double)(mist_segment_linearf(1.0f, 2.0f, 0.5f, 0.5f, (float)x, &tf) + tf);
 }
 #endif
 
@@ -130,11 +130,11 @@ static double dir(double x)
     double pdf = 0;
     float pdff = 0;
     return mist_dir_from_cos(wi, x, x).x + mist_hg_sample_dir(0.5, wi, x, x, &pdf).z + pdf
-         + mist_dir_from_cosf(wif, (float)x, (float)x).x
-         + mist_hg_sample_dirf(0.5f, wif, (float)x, (float)x, &pdff).z + pdff
+         + (double)(mist_dir_from_cosf(wif, (float)x, (float)x).x
+                    + mist_hg_sample_dirf(0.5f, wif, (float)x, (float)x, &pdff).z + pdff)
 #  ifndef EXPECT_NO_DRAINE
          + mist_draine_sample_dir(0.5, 2.0, wi, x, x, &pdf).z
-         + mist_cs_sample_dirf(0.5f, wif, (float)x, (float)x, &pdff).z
+         + (double)mist_cs_sample_dirf(0.5f, wif, (float)x, (float)x, &pdff).z
 #  endif
 #  ifndef EXPECT_NO_RAYLEIGH
          + mist_rayleigh_sample_dir(wi, x, x, &pdf).z
@@ -164,7 +164,7 @@ static double batch(double x)
     mist_rayleigh_eval_n(a, a, 3);
     mist_rayleigh_sample_nf(af, af, 3);
 #  endif
-    return a[0] + a[2] + af[1];
+    return a[0] + a[2] + (double)af[1];
 }
 #endif
 

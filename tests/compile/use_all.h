@@ -109,6 +109,6 @@ MIST_FUNC double use_all(double x)
         mist_hfog_layers_evalf(hff, 2, of, wif, 100.0f, 4, &tf, &lf, &bf); sf += tf.r + lf.r + bf.r;
         sf += mist_segment_linearf(0.1f, 0.2f, 1.0f, 2.0f, xf, &trf) + trf;
     }
-    return s + sf;
+    return s + (double)sf;
 }
 #endif
