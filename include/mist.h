@@ -449,6 +449,13 @@ typedef struct mist_hfogf {
     int        sun_extinction;
 } mist_hfogf;
 
+/* the null pointer (C++11 and later: nullptr, for -Wzero-as-null-pointer-constant) */
+#if defined(__cplusplus) && __cplusplus >= 201103L
+#  define MIST__NULL nullptr
+#else
+#  define MIST__NULL 0
+#endif
+
 /* 1/(4 pi), 3/(16 pi), 2 pi */
 #define MIST__INV4PI  0.0795774715459476678844418816862571810
 #define MIST__3_16PI  0.0596831036594607509133314112646928858
@@ -1546,7 +1553,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_step)(MIST__T g, MIST__T c0, MIS
     MIST__T v2 = MIST__FN(mist__v2)(g, st), v = MIST__M(sqrt)(v2);   /* = V(gg, u) */
     MIST__T a = MIST__C(1) + g * g, cn = c0 + c1 * (a + g * g) / MIST__C(3);
     MIST__T m = ((MIST__C(1) - gg) * (MIST__C(1) + gg)) * (c0 + c1 * u * u), fs, r, s, un;
-    r = sg * MIST__FN(mist__draine_res)(g, c0, c1, xi, st, (MIST__T *)0, &fs);   /* unmirrored */
+    r = sg * MIST__FN(mist__draine_res)(g, c0, c1, xi, st, MIST__NULL, &fs);   /* unmirrored */
     s = r * v2 / fs; un = u - s;                                  /* (F - x) / f */
     *eb = kb * s * s;
     *ok = *eb * m <= tol * (MIST__FN(mist__abs)(un) * m
@@ -1800,7 +1807,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_pick)(MIST__W g, MIST__W c0, MIS
                                                       MIST__W xi, MIST__T lo, MIST__T hi)
 {
     MIST__W mid = (MIST__W)0.5 * ((MIST__W)lo + (MIST__W)hi);
-    return MIST__WFN(mist__draine_res)(g, c0, c1, xi, mid, (MIST__W *)0, (MIST__W *)0) > 0
+    return MIST__WFN(mist__draine_res)(g, c0, c1, xi, mid, MIST__NULL, MIST__NULL) > 0
            ? lo : hi;
 }
 MIST__F MIST__T MIST__FN(mist__draine_round)(MIST__T g, MIST__W c0, MIST__W c1, MIST__T xi,
@@ -1860,7 +1867,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     if (f0) t0w = ((MIST__W)f0[0] - (MIST__W)x) + (MIST__W)f0[1];
     if (!MIST__DBL) {                           /* float: all in double */
         uw = (MIST__W)st;
-        MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
+        MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != MIST__NULL,
                                        (MIST__W)MIST__EPS / 64, 2 * MIST__MAXIT, &uw);
         return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
                                             MIST__WFN(mist__abs)(uw) * ((MIST__W)MIST__EPS / 16));
@@ -1869,21 +1876,21 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
      * from the table or HG first in T to its noise (long double is slower) */
     uw = (MIST__W)st;
     if (good == 2
-        && MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
+        && MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != MIST__NULL,
                                           (MIST__W)MIST__EPS / 64, 6, &uw))
         return MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
                                             MIST__WFN(mist__abs)(uw) * ((MIST__W)MIST__EPS / 16));
 #endif
     if (f0) t0 = (f0[0] - x) + f0[1];
     u = st;
-    MIST__FN(mist__draine_newton)(g, c0, c1, x, t0, f0 != 0, MIST__C(16) * MIST__EPS,
+    MIST__FN(mist__draine_newton)(g, c0, c1, x, t0, f0 != MIST__NULL, MIST__C(16) * MIST__EPS,
                                   MIST__MAXIT, &u);
 #if defined(MIST__DD)
     if (MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, u, &st)) return st;
 #endif
 #ifdef MIST__W
     uw = (MIST__W)u;
-    MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != 0,
+    MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != MIST__NULL,
                                    (MIST__W)MIST__EPS / 64, MIST__MAXIT, &uw);
     u = MIST__FN(mist__draine_round)(g, c0w, c1w, x, uw,
                                      MIST__WFN(mist__abs)(uw) * ((MIST__W)MIST__EPS / 16));
@@ -2079,7 +2086,7 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
     return MIST__FN(mist__draine_sample)(MIST__FN(mist__g)(g),
                                          alpha > MIST__C(0) ? alpha : MIST__C(0), c0, c1,
                                          MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)),
-                                         (const MIST__T *)0, (const MIST__T *)0);
+                                         MIST__NULL, MIST__NULL);
 }
 
 /* Cornette-Shanks: Draine with alpha = 1. Domain: g in [-1,1], xi in [0,1]. */
@@ -2288,7 +2295,7 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         MIST__T u = MIST__C(0), v2;
         if (p.w > MIST__C(0) && c1 != MIST__C(0) && p.g < MIST__C(1) && p.g > MIST__C(-1))
             u = MIST__FN(mist__draine_sample)(p.g, p.alpha, c0, c1,
-                                              (MIST__T)i / MIST__PHASE_K, p.f0, 0);
+                                              (MIST__T)i / MIST__PHASE_K, p.f0, MIST__NULL);
         v2 = MIST__FN(mist__v2)(p.g, u);
         p.tab[i] = u;
         p.tab[MIST__PHASE_K + 1 + i] = MIST__C(2) * cn * v2 * MIST__M(sqrt)(v2)
@@ -3585,7 +3592,7 @@ MIST__F MIST__RGB MIST__FN(mist_hfog_transmittance)(const MIST__HFOG *fog, MIST_
                                                     MIST__V3 dir, MIST__T length)
 {
     MIST__RGB t;
-    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, (MIST__RGB *)0);
+    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, MIST__NULL);
     return t;
 }
 
@@ -3594,7 +3601,7 @@ MIST__F MIST__RGB MIST__FN(mist_hfog_inscatter)(const MIST__HFOG *fog, MIST__V3 
                                                 MIST__V3 dir, MIST__T length)
 {
     MIST__RGB l;
-    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, (MIST__RGB *)0, &l);
+    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, MIST__NULL, &l);
     return l;
 }
 
@@ -3907,7 +3914,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         dl = w * (MIST__C(1) / H[i] - MIST__C(1) / H[k]);
                         dl = dl == MIST__C(0) ? MIST__C(0) : dl * dt;
                         ra = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, i, c, y + w * tb[j],
-                                                  (MIST__T *)0);
+                                                  MIST__NULL);
                         rb = MIST__M(exp)(ra + dl);
                         ra = MIST__M(exp)(ra);
                         sa += ra > rb ? ra : rb;
