@@ -102,14 +102,16 @@ static void fz_check_sphere(const mist_mie_sphere *s, double x, mist_mie_complex
          * Q_sca above Q_ext by their rounding; a sum of N <= 2100 terms of one sign
          * errs by < N eps relative, 2100 * 1.1e-16 = 2.4e-13, and the coefficients'
          * own error grows like 1e-16 / |m - 1| (the header): 1e-9 relative plus
-         * 1e-16 / |m - 1| covers both with room), |g| <= 1, 1 <= N <= mist_mie_terms
-         * (m = 1 and the dipole limit store one term). */
+         * 1e-16 / |m - 1| covers both with room), |g| <= 1, 1 <= N <= the most
+         * terms the workspace holds, mist_mie_workspace_size / 9 - 1 (m = 1 and
+         * the dipole limit store one term). */
         double dm = sqrt((m.re - 1) * (m.re - 1) + m.im * m.im);
         double tol = pec ? 1e-9 : 1e-9 + (dm > 0 ? 1e-16 / dm : 1);
         if (!(fz_fin(s->q_ext) && fz_fin(s->q_sca) && fz_fin(s->q_abs) && fz_fin(s->q_back)
               && fz_fin(s->g) && s->q_ext >= 0 && s->q_sca >= 0 && s->q_abs >= 0
               && s->q_back >= 0 && s->q_sca <= s->q_ext * (1 + tol) && fabs(s->g) <= 1
-              && s->n_terms >= 1 && s->n_terms <= mist_mie_terms(x) && s->x == x))
+              && s->n_terms >= 1
+              && (size_t)s->n_terms <= mist_mie_workspace_size(x) / 9 - 1 && s->x == x))
             mi_fail("mie sphere(x=%a, m=(%a, %a)): N %d Qe %a Qs %a Qa %a Qb %a g %a", x,
                     m.re, m.im, s->n_terms, s->q_ext, s->q_sca, s->q_abs, s->q_back, s->g);
     }
@@ -164,8 +166,11 @@ static void fz_op_sphere(mi_bytes *b)
     int pec, valid;
     if (!fz_sphere_input(b, &x, &m, mu, &n)) return;
     valid = fz_valid(x, m, &pec);
+    /* the workspace: 9 doubles for each of Wiscombe's N + 4 x^(1/3) + 8 terms
+     * (the most mist_mie sums), and one more term's */
     if (valid ? mist_mie_terms(x) <= 0
-                || mist_mie_workspace_size(x) != 9 * ((size_t)mist_mie_terms(x) + 1)
+                || mist_mie_workspace_size(x)
+                   != 9 * ((size_t)mist_mie_terms(x) + (size_t)(4 * pow(x, 1.0 / 3.0)) + 9)
               : (x > 0 && x <= MIST_MIE_X_MAX) ? 0
               : mist_mie_terms(x) != 0 || mist_mie_workspace_size(x) != 0)
         mi_fail("mie terms(%a) = %d, workspace_size %u", x, mist_mie_terms(x),

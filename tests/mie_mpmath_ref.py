@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Reference values for tests/test_mie.c (test_series_tail): the Lorenz-Mie
+series in mpmath, independent of mist_mie.h's algorithm.  a_n, b_n from
+[BH83 eq. 4.53] with the Riccati-Bessel functions psi_n, chi_n by their
+upward three-term recurrence (unstable past n ~ |z|, so the working
+precision is raised by the digits that recurrence loses and checked by
+recomputing with 25 digits more), summed to N = x + 4 x^(1/3) + 40 terms
+(past every term above 1e-40 of the largest here).  BH83 convention: m = mr +
+i mi, mi >= 0.  Prints a C table: x, mr, mi, Q_ext, Q_sca, g, Q_back,
+p(1), p(0), p(-1) (per steradian, normalised over the sphere).
+Run: python3 tests/mie_mpmath_ref.py   (mpmath; a few minutes)."""
+import math
+import mpmath as mp
+
+def riccati(z, n_max):
+    s, c = mp.sin(z), mp.cos(z)
+    psi, chi = [c, s], [-s, c]               # n = -1, 0  (chi_n = -z y_n)
+    for n in range(1, n_max + 1):
+        f = (2 * n - 1) / z
+        psi.append(f * psi[-1] - psi[-2])
+        chi.append(f * chi[-1] - chi[-2])
+    return psi, chi
+
+def series(x, m, n_max):
+    z = m * x
+    px, cx = riccati(x, n_max)
+    pz, _ = riccati(z, n_max)
+    a, b = [], []
+    for n in range(1, n_max + 1):
+        ps, ps1 = px[n + 1], px[n]
+        xi, xi1 = px[n + 1] - 1j * cx[n + 1], px[n] - 1j * cx[n]
+        qs, qs1 = pz[n + 1], pz[n]
+        dps, dxi, dqs = ps1 - n / x * ps, xi1 - n / x * xi, qs1 - n / z * qs
+        a.append((m * qs * dps - ps * dqs) / (m * qs * dxi - xi * dqs))
+        b.append((qs * dps - m * ps * dqs) / (qs * dxi - m * xi * dqs))
+    return a, b
+
+def quantities(x, a, b):
+    qe = qs = gq = mp.mpf(0)
+    bk = mp.mpc(0)
+    n_max = len(a)
+    for i in range(n_max):
+        n = i + 1
+        qe += (2 * n + 1) * mp.re(a[i] + b[i])
+        qs += (2 * n + 1) * (abs(a[i]) ** 2 + abs(b[i]) ** 2)
+        gq += mp.mpf(2 * n + 1) / (n * (n + 1)) * mp.re(a[i] * mp.conj(b[i]))
+        if i + 1 < n_max:
+            gq += mp.mpf(n * (n + 2)) / (n + 1) * mp.re(a[i] * mp.conj(a[i + 1])
+                                                      + b[i] * mp.conj(b[i + 1]))
+        bk += (2 * n + 1) * (-1) ** n * (a[i] - b[i])
+    out = [2 / x ** 2 * qe, 2 / x ** 2 * qs, 2 * gq / qs, abs(bk) ** 2 / x ** 2]
+    for mu in (1, 0, -1):
+        pim, pin = mp.mpf(0), mp.mpf(1)
+        s1 = s2 = mp.mpc(0)
+        for i in range(n_max):
+            n = i + 1
+            tau = n * mu * pin - (n + 1) * pim
+            c = mp.mpf(2 * n + 1) / (n * (n + 1))
+            s1 += c * (a[i] * pin + b[i] * tau)
+            s2 += c * (a[i] * tau + b[i] * pin)
+            pim, pin = pin, ((2 * n + 1) * mu * pin - (n + 1) * pim) / n
+        out.append((abs(s1) ** 2 + abs(s2) ** 2) / (2 * mp.pi * x ** 2 * out[1]))
+    return out
+
+def reference(x, mr, mi):
+    n_max = int(x + 4 * x ** (1.0 / 3) + 40)
+    lo = min(x, math.hypot(mr, mi) * x)
+    loss = sum(2 * math.log10((k + 1.0) / lo) for k in range(1, n_max + 1) if k + 1 > lo)
+    dm = abs(complex(mr, mi) - 1)
+    res = []
+    for extra in (0, 25):
+        mp.mp.dps = int(40 + loss + max(0, -math.log10(dm)) + extra)
+        xx, m = mp.mpf(x), mp.mpc(mr, mi)
+        res.append(quantities(xx, *series(xx, m, n_max)))
+    err = max(float(abs(u - v) / abs(v)) for u, v in zip(*res) if v != 0)
+    assert err < 1e-25, err
+    return res[1]
+
+CASES = [  # x, mr, mi (the double nearest each literal)
+    (1e-6, 1.33, 0.0), (0.003, 0.75, 0.0), (0.01, 1.5, 0.1), (0.007748, 1000.0, 0.0),
+    (0.0119817209456378, 431.86451, 0.1), (0.099, 0.75, 0.0), (0.3, 1.33, 0.0),
+    (4.301104666247005, 4.0, 0.0), (0.2328940182647092, 30.0, 0.0),
+    (5.212822, 1.55, 0.0), (339.04523060942176, 2.8136189359334152, 1e-4),
+    (1000.0, 1.33, 0.01), (10000.0, 1.33, 1e-5),
+]
+if __name__ == '__main__':
+    for x, mr, mi in CASES:
+        v = reference(x, mr, mi)
+        print('    {%s, %s, %s,\n     %s},' % (repr(x), repr(mr), repr(mi),
+              ', '.join(mp.nstr(t, 17, min_fixed=1, max_fixed=0) for t in v)), flush=True)
