@@ -2449,7 +2449,12 @@ MIST__F MIST__V3 MIST__FN(mist_phase_sample_dir)(const MIST__PHASE *p, MIST__V3 
 /* printed reading jumps to 0.206), and it is the one closer to Lorenz-Mie  */
 /* (measured: tests/test_fits.c, README "Fit error").                       */
 /* The published ranges do not meet at d = 0.1 and 1.5: the fits are kept   */
-/* as published, with the jumps measured in README "Fit error".             */
+/* as published, with the jumps measured in README "Fit error".  Each type  */
+/* compares d with its own rounding of the bounds, so that the literal 0.1  */
+/* (0.1f) lands in eq. 11-14 in both: mist_fog_from_diameterf(0.1f) and     */
+/* mist_fog_from_diameter(0.1) agree, while mist_fog_from_diameter((double) */
+/* 0.1f), 1.5e-9 above 0.1, takes eq. 15-18 (the 0.1 um jump: g_hg 0.138   */
+/* against 0.104; found by an independent check).                          */
 /* Domain: d in (0, 50].  d <= 0 and NaN give the d -> 0 limit of eq. 11-14 */
 /* (g_hg = g_d = 0, alpha = 250, w_d = 0.252977: Rayleigh-like); d > 50     */
 /* (and +inf) is clamped to 50, the end of the fitted range.                */
