@@ -17,9 +17,21 @@
 #ifndef MIST_REF_H
 #define MIST_REF_H
 
+#include <float.h>
 #include <math.h>
 
+/* The 113-bit type: __float128 (gcc and clang on x86-64), else a long
+ * double that is IEEE binary128 (AArch64 Linux, ...).  Without either
+ * (MSVC; Apple's arm64, whose long double is double) the tests that need
+ * it are not built: CMakeLists.txt checks this header compiles
+ * (MIST_HAVE_QREAL) and reports them skipped. */
+#if defined(__SIZEOF_FLOAT128__)
 __extension__ typedef __float128 qreal;
+#elif defined(LDBL_MANT_DIG) && LDBL_MANT_DIG >= 113
+typedef long double qreal;
+#else
+#  error "tests/mist_ref.h needs __float128 or a 113-bit long double"
+#endif
 
 static inline qreal ref_sqrtq(qreal a)
 {
