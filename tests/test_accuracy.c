@@ -468,7 +468,9 @@ static void test_cbrt(void)
     for (i = 0; i < (long)(sizeof edge / sizeof *edge); ++i) {
         double a = mist__cbrt(edge[i]), b = cbrt(edge[i]);
         if (edge[i] > 0x1p-1022 && edge[i] < INFINITY) {
-            long double ref = cbrtl((long double)edge[i]);
+            /* as 2 cbrt(x / 8) (exact scaling): glibc's cbrtl on
+             * powerpc64le's IBM long double is NaN at DBL_MAX */
+            long double ref = 2 * cbrtl((long double)(edge[i] / 8));
             bad += !((double)fabsl((long double)a - ref)
                      <= 6 * (nextafter((double)ref, INFINITY) - (double)ref));
         } else {
