@@ -226,6 +226,16 @@
  *
  * LICENSE: MIT (see end of file).
  */
+/* The null pointer (C++11 and later: nullptr, for -Wzero-as-null-pointer-
+ * constant), defined on every inclusion: mist_mie.h, which includes this
+ * file for the fast-math guard only, uses it too. */
+#ifndef MIST__NULL
+#  if defined(__cplusplus) && __cplusplus >= 201103L
+#    define MIST__NULL nullptr
+#  else
+#    define MIST__NULL 0
+#  endif
+#endif
 #if defined(MIST__FP_PUSH) || defined(MIST__FP_POP)
 /* ------------------------------------------------------------------------ */
 /* The fast-math guard (see FAST MATH above), included with MIST__FP_PUSH   */
@@ -466,13 +476,6 @@ typedef struct mist_hfogf {
     mist_rgbf  sun, ambient;
     int        sun_extinction;
 } mist_hfogf;
-
-/* the null pointer (C++11 and later: nullptr, for -Wzero-as-null-pointer-constant) */
-#if defined(__cplusplus) && __cplusplus >= 201103L
-#  define MIST__NULL nullptr
-#else
-#  define MIST__NULL 0
-#endif
 
 /* 1/(4 pi), 3/(16 pi), 2 pi */
 #define MIST__INV4PI  0.0795774715459476678844418816862571810

@@ -127,13 +127,6 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-/* the null pointer (C++11 and later: nullptr, for -Wzero-as-null-pointer-constant) */
-#if defined(__cplusplus) && __cplusplus >= 201103L
-#  define MIST_MIE__NULL nullptr
-#else
-#  define MIST_MIE__NULL NULL
-#endif
-
 /* The fast-math guard of mist.h (see FAST MATH there; MIST_ALLOW_FAST_MATH
  * turns it off): without it gcc -ffast-math drops the NaN tests and
  * tests/test_mie.c crashes.  Popped at the end of the file. */
@@ -442,7 +435,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie__zero(int status)
     mist_mie_sphere s;
     s.status = status; s.n_terms = 0; s.x = 0; s.m = mist_mie_cplx(0, 0);
     s.q_ext = s.q_sca = s.q_abs = s.q_back = s.g = 0;
-    s.coef_ = MIST_MIE__NULL; s.amp_scale_ = 0; s.p_norm_ = 0; s.owned_ = MIST_MIE__NULL;
+    s.coef_ = MIST__NULL; s.amp_scale_ = 0; s.p_norm_ = 0; s.owned_ = MIST__NULL;
     return s;
 }
 
@@ -881,7 +874,7 @@ MIST_MIE_FUNC mist_mie_dist mist_mie__dist(int kind, double p1, double p2, doubl
     mist_mie_dist d;
     d.kind = kind; d.p1 = p1; d.p2 = p2; d.p3 = p3;
     d.r_min = d.r_max = 0; d.n_radii = 0;
-    d.r = d.w = MIST_MIE__NULL; d.n = 0;
+    d.r = d.w = MIST__NULL; d.n = 0;
     return d;
 }
 
