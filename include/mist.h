@@ -53,8 +53,8 @@
  *   the fifth session of 2026-11-27 they ran in double there: Draine up to
  *   3.1x the bar near u = 0, not monotone).  Float is the same everywhere.  Run
  *   in CUDA device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90;
- *   tests/gpu/; before the double Draine samplers took double-double, not
- *   yet run on a GPU since): every sampler within those bars, float
+ *   tests/gpu/; the seventh session of 2026-11-27): every sampler within
+ *   that bar (worst 0.249 of it; double Draine at ~2x double's cost), float
  *   samples bit for bit the host's, bad input answered as on the host; with
  *   --use_fast_math too, the fog mixture's float remap of xi then an ulp or
  *   two off (README "On a GPU").

@@ -6,8 +6,8 @@
  *   - every device sample (scalar and prepared, float and double, HG,
  *     Draine, Cornette-Shanks, Rayleigh) against the __float128 inverse CDF
  *     of tests/mist_ref.h, with test_accuracy.c's bar (device code has no
- *     long double: the double Draine samplers get the bar the header
- *     documents without it);
+ *     long double: the double samplers finish in double-double, with the
+ *     same bar);
  *   - every device density against the __float128 density, beside the
  *     host's error on the same inputs;
  *   - bad input (NaN, inf, |g| > 1, alpha < 0, xi outside [0, 1), zero and
