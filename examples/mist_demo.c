@@ -366,6 +366,7 @@ static void panel_range(panel *p, const curve *cs, int n)
             if (log10(v) < lo) lo = log10(v);
             if (log10(v) > hi) hi = log10(v);
         }
+    if (!(lo <= hi)) lo = hi = 0.0;     /* no positive value: one decade (cppcheck) */
     p->y0 = (int)floor(lo);
     p->y1 = (int)ceil(hi);
     if (p->y1 - p->y0 < 2) p->y1 = p->y0 + 2;
