@@ -85,7 +85,8 @@
  *   MIST_NO_LONG_DOUBLE  build the double samplers as where long double is
  *                 no wider (MSVC, ARM Macs, CUDA device code): double-double
  *                 (see above; the tests build it).  The same bar; without fma
- *                 about the cost of long double (README "Speed").
+ *                 about the cost of long double (README "Without a wider
+ *                 long double").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -885,7 +886,7 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* long double (./build/mist_bench).  With Dekker's product (no fma, no     */
 /* wider long double: MSVC x64) the same values and checks (mist_ddcheck    */
 /* built so: 0.25x, 99959 of 1e5 rounded, 0 reversed), ~13 ns a sample (the */
-/* double forms took 2.4; measured: README "Without a wider long double").  */
+/* double forms took 2.4; measured: docs/history.md, "Without a wider ...").*/
 /* This is the double sampler wherever it applies; elsewhere long double.   */
 /* ======================================================================== */
 
@@ -1324,8 +1325,8 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
     /* float: the parameter's terms before any branch, so that a caller's
      * loop over one medium hoists them (computed inside the domain test's
      * branch they were not: 1.28x eq. 3 with g at run time, 0.88-0.90x
-     * now, README; on an H200 1.78 -> 1.61 ps a sample).  The unprepared
-     * float Draine sampler calls mist__hg_any for alpha = 0 instead: in
+     * now, docs/history.md; on an H200 1.78 -> 1.61 ps a sample).  The
+     * unprepared float Draine sampler calls mist__hg_any for alpha = 0: in
      * CUDA device code nvcc allocated it 90 registers with this inlined,
      * 80 without (ptxas -v, sm_90, nvcc 13; the same arithmetic) */
     MIST__W t[3];
@@ -1410,7 +1411,7 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* midpoints, 3.8-3.9x; with eq. 6 reordered (mist__draine_eq6) 76-78 ns,   */
 /* 3.5x; with mist__cbrt 68-69 ns, 3.1-3.2x; with one residual 46-48 ns,    */
 /* 2.2x; with that residual always inlined 42 ns, 2.0x.  In CUDA device     */
-/* code too (H200: 27.7 -> 16.7 ps a sample, README).                       */
+/* code too (H200: 27.7 -> 16.7 ps a sample, docs/history.md).             */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
@@ -2012,7 +2013,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
  * control passes a looser k).  This replaced the signs of two residuals at
  * the midpoints (the same answers where both accept: both are the root
  * correctly rounded); one residual's instructions instead of two waiting
- * on eq. 6's long chain (README, "Speed"). */
+ * on eq. 6's long chain (docs/history.md, "Speed"). */
 #if defined(MIST__W_EXACT)
 MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                   MIST__W ud, MIST__W k)
@@ -2550,7 +2551,7 @@ MIST__F MIST__T MIST__FN(mist__pow2inv)(MIST__T m)
  * where the squares of floats neither overflow nor underflow (<= 1.2e77,
  * >= 2e-90), so |v|^2 itself tells 0, NaN and inf apart; one rounding at
  * the end.  One division, for 1/|v| (it had divided by the largest
- * component: three more; README, "Directions") */
+ * component: three more; docs/history.md, "Every other public function") */
 MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
 {
 #if defined(MIST__W_EXACT)

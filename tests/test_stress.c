@@ -28,8 +28,8 @@
  *                        arrays owes the rest of its share to the random
  *                        draws after it, st_owe).  The long run:
  *                          MIST_STRESS_CALLS=1e10 build/test_stress
- *                        (~130 ns a call: about 22 minutes; 1e9 measured:
- *                        see the README's robustness section).
+ *                        (~130 ns a call: about 22 minutes; the last long
+ *                        runs: README, "Stress and fuzzing").
  *   MIST_STRESS_SEED=S   the seed of the random draws (default fixed).
  *   MIST_STRESS_PRINT=N  print the first N failures (default 25).
  *   MIST_STRESS_ONLY=L   run only the families in the list L (any of dens,
