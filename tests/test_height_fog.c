@@ -796,6 +796,25 @@ static void test_layers(void)
                 for (is = 0; is < 3; ++is)
                     ml_case(atm, 3, ya[iy], wl[iw], sl[is] / 10, &p8, 1, "artist");
     }
+    /* an absorbing layer outweighing a scattering one by more than 1/eps:
+     * each layer's share of the extinction must keep its variation where
+     * 1 - share rounds to 1 (it did not: the bound was half what the
+     * last, unbounded piece needs, 1.8x exceeded; an independent check
+     * found it at 1.95x with five layers) */
+    {
+        static const double yb[] = { 0, 3000 }, wb[] = { 0.5, 0.05 }, sb[] = { 1e5, INFINITY };
+        static const int pb[] = { 1, 2, 8, 64 };
+        size_t ib, jb, kb;
+        atm[0] = layer(0, 1, 1000, 0, 0, 0, 1, 1, 1, 0, 0);         /* absorbs only */
+        atm[1] = layer(0, 1, 100, 1e-18, 2e-18, 4e-18, 0, 0, 0, 0, 0);
+        atm[0].ambient.r = atm[0].ambient.g = atm[0].ambient.b = 1;
+        atm[0].sun.r = atm[0].sun.g = atm[0].sun.b = 0;
+        atm[0].sun_extinction = 0;
+        for (ib = 0; ib < 2; ++ib)
+            for (jb = 0; jb < 2; ++jb)
+                for (kb = 0; kb < 2; ++kb)
+                    ml_case(atm, 2, yb[ib], wb[jb], sb[kb], pb, 4, "absorber");
+    }
     qsort(ml_rel, (size_t)ml_nrel, sizeof *ml_rel, cmp_d);
     printf("layers: %d in-scatter values within their bound (worst error/bound %.3f); with 8 "
            "pieces the bound is %.2g of the value (median), %.2g (90%%), %.2g (max); "
