@@ -823,6 +823,49 @@ static void test_layers(void)
            ml_worst_T, (double)(clock() - t0) / CLOCKS_PER_SEC);
 }
 
+/* The sun along the view (nu = 0) over an infinite optical depth: a layer
+ * whose density at the origin is e^1000 (beyond the range).  All the
+ * in-scatter comes from within 1e-400 m of the origin, where the shares are
+ * the origin's: L = ambient x the dense layer's albedo, 0.5 (the other
+ * layer's share is e^-1000 smaller); the sun's column above is infinite: no
+ * sun light.  The bound must be finite (it was 0 x inf = NaN, reported as
+ * +inf: an independent check).  Reference: that limit, exact. */
+static void test_layers_nu0(void)
+{
+    mist_hfog h[2];
+    mist_hfogf hf[2];
+    mist_rgb T, L, B;
+    mist_rgbf Tf, Lf, Bf;
+    mist_vec3 o = { 0, -1000, 0 }, d = { 0.6, 0.8, 0 };
+    mist_vec3f of = { 0, -1000, 0 }, df = { 0.6f, 0.8f, 0 };
+    int k, p;
+    h[0] = layer(0, 1, 1, 0, 0, 0, 0.01, 0.01, 0.01, 0.5, 0.5);
+    h[1] = layer(0, 1, 1000, 1e-5, 2e-5, 4e-5, 0, 0, 0, 0, 0);
+    h[0].sun_dir = d;
+    h[0].sun.r = h[0].sun.g = h[0].sun.b = 1;
+    h[0].ambient.r = h[0].ambient.g = h[0].ambient.b = 1;
+    h[0].sun_extinction = 1;
+    for (k = 0; k < 2; ++k) {
+        memset(&hf[k], 0, sizeof hf[k]);
+        hf[k].base = (float)h[k].base; hf[k].density = (float)h[k].density;
+        hf[k].scale_height = (float)h[k].scale_height;
+        hf[k].rayleigh_scat.r = hf[k].rayleigh_ext.r = (float)h[k].rayleigh_ext.r;
+        hf[k].mie_ext.r = (float)h[k].mie_ext.r; hf[k].mie_scat.r = (float)h[k].mie_scat.r;
+        hf[k].mie_phase = mist_fog_makef(0.5f, 0, 0, 0);
+    }
+    hf[0].sun_dir = df; hf[0].sun.r = 1; hf[0].ambient.r = 1; hf[0].sun_extinction = 1;
+    for (p = 1; p <= 64; p *= 4) {
+        mist_hfog_layers_eval(h, 2, o, d, 1e4, p, &T, &L, &B);
+        mist_hfog_layers_evalf(hf, 2, of, df, 1e4f, p, &Tf, &Lf, &Bf);
+        mt_check(B.r < 1 && fabs(L.r - 0.5) <= B.r && B.g < 1 && fabs(L.g - 0.5) <= B.g
+                 && T.r == 0, "layers, nu = 0, infinite depth (pieces %d): L %.17g bound %g", p,
+                 L.r, B.r);
+        mt_check(Bf.r < 1 && fabsf(Lf.r - 0.5f) <= Bf.r && Tf.r == 0,
+                 "float layers, nu = 0, infinite depth (pieces %d): L %.9g bound %g", p,
+                 (double)Lf.r, (double)Bf.r);
+    }
+}
+
 /* ------------------------------------------------------------------------ */
 /* The linear-extinction step (beyond [I18], after Bouthors et al. 2008)    */
 /* ------------------------------------------------------------------------ */
@@ -1380,7 +1423,7 @@ int main(int argc, char **argv)
     ref_tol = 4e-18L;
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); }
-    if (want(argc, argv, "layers")) test_layers();
+    if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); }
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long(); }
     if (want(argc, argv, "tiny")) test_tiny_cases();
     if (want(argc, argv, "bad")) test_bad();
