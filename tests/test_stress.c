@@ -28,7 +28,7 @@
  *                        arrays owes the rest of its share to the random
  *                        draws after it, st_owe).  The long run:
  *                          MIST_STRESS_CALLS=1e10 build/test_stress
- *                        (~130 ns a call: about 22 minutes; the last long
+ *                        (~73 ns a call: about 12 minutes here; the last long
  *                        runs: README, "Stress and fuzzing").
  *   MIST_STRESS_SEED=S   the seed of the random draws (default fixed).
  *   MIST_STRESS_PRINT=N  print the first N failures (default 25).
