@@ -3095,7 +3095,10 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* layers' share of a layer's piece is below eps (an absorbing layer       */
 /* outweighing the scattering ones by 1/eps) 1 - share rounds to 1, and    */
 /* the bound was half what the last, unbounded piece needs (1.95x          */
-/* exceeded; found by that check, tested since).                           */
+/* exceeded; found by that check, tested since); and where the other       */
+/* layers outweigh a layer beyond the range at both ends of a piece, its   */
+/* share varies by at most 1/BIG, not 0 (float: a 1e-40 share of a         */
+/* subnormal in-scatter, 1.87x exceeded; tested).                          */
 /*                                                                          */
 /* A RAY-MARCHING STEP (mist_segment_linear; [B08] integrates single        */
 /* scattering per piecewise-linear segment).  Over a step of length len    */
@@ -3967,7 +3970,10 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                      * the scattering ones: the bound was then half what it
                      * must be, 1.95x exceeded; found by an independent check) */
                     oi = sa <= MIST__BIG ? sd / (MIST__C(1) + sa) / (MIST__C(1) + sb)
-                                         : MIST__C(1) / (MIST__C(1) + sb);
+                       : sb <= MIST__BIG ? MIST__C(1) / (MIST__C(1) + sb)
+                       : MIST__C(1) / MIST__BIG;   /* the ratios beyond the range
+                        * at both ends: f_i <= 1/BIG, not 0 (float: the share
+                        * 1e-40 of a subnormal in-scatter, 1.9x its bound) */
                     osc += oi >= MIST__C(0) ? oi : MIST__C(1);   /* NaN: all */
                 }
                 bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * gj * om
