@@ -1264,9 +1264,12 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
              * independent check).  The number (sum of the weights) is then
              * the exact integral over [t0, t1] (incomplete gamma); the
              * cross sections' integrands, n r^2 Q and above, are smooth
-             * enough for the nodes. */
+             * enough for the nodes.  Only where the range holds r = 0 and
+             * the panels resolve the law's scale b (else the numerators
+             * miss what the exact number counts: a range far in the tail
+             * gave C = 0, found by fuzz_mie; there the nodes' own sum). */
             double al = (1 - 3 * dist->p2) / dist->p2, b = dist->p1 * dist->p2;
-            if (al < 2)            /* (b / h: lengths x 2^k give the same bits) */
+            if (al < 2 && t0 == 0 && h <= 64 * b)  /* (b / h: lengths x 2^k, same bits) */
                 swx = 2 * b / h * exp((al > 0 ? al - al * log(al) : 0)
                                       + mist_mie__lngammaint(al + 1, t0 / b, t1 / b) - lwmax);
         }
@@ -1308,7 +1311,7 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
         }
     }
     free(work);
-    if (swx > 0 && sw > 0) sw = swx * wsum_l;
+    if (swx > 0 && swx < (double)INFINITY && sw > 0) sw = swx * wsum_l;
     if (!ok || !(sw > 0)) {
         int st = ok ? MIST_MIE_EDOMAIN : a.status;
         if (phase) for (i = 0; i < n_mu; ++i) phase[i] = 0;
