@@ -60,7 +60,14 @@
  *   to x = 1000, 1e-10 at x = 1e4; an independent check of 372 random
  *   cases with |m - 1| > 0.01, x from 1e-6 to 5000: Q and g within 5e-12,
  *   p(mu) within 1.3e-10 (x = 5000).  For m close to 1 the error grows
- *   like 1e-16 / |m - 1| (41 cases: at most 1.1e-13 / |m - 1|).  Cut at N
+ *   like 1e-16 / |m - 1| (41 cases: at most 1.1e-13 / |m - 1|); where
+ *   |m - 1| x^3 is so small that the coefficients' squares leave the range
+ *   (below ~1e-154), the series' Q_sca, g and p are 0 (the dipole limit,
+ *   x < 1e-8, scales its coefficients and keeps p exact; before the
+ *   seventh session of 2026-11-27 p was +inf there, m = 1 + 1e-158 i,
+ *   found by an independent check).  Near mu = +-1 at large x, p moves by
+ *   ~x^2/2 times mu's rounding (an independent check: 1.4e-10 at x =
+ *   1000, mu = -1 + 2^-53; 7e-13 at mu = +-1 itself).  Cut at N
  *   itself, as MIEV0 and Du (2004) do (and mist_mie did before the sixth
  *   session of 2026-11-27), the tail stays in the results: Q_back 2e-7 off
  *   at x = 339 and 4200, 6.3e-6 at x = 1e4, m = 1.33 + 1e-5 i (which is
@@ -487,9 +494,24 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             s.q_back = 4 * x4 * mist_mie__abs2(k);
             s.g = 0;
         }
-        mist_mie__store(coef, 1, a1, b1);
-        s.n_terms = 1;
-        s.amp_scale_ = x2 * x;
+        {   /* a1, b1 scaled by a power of 2 to [1/2, 1) and the amplitudes
+             * scaled back: exact, but where a1^2 left the range (m = 1 +
+             * 1e-158 i: p_norm_ was +inf, at 1e-165 i 0, with status OK;
+             * an independent check found it; p is their ratio) */
+            double cm = fabs(a1.re), f;
+            int e;
+            if (fabs(a1.im) > cm) cm = fabs(a1.im);
+            if (fabs(b1.re) > cm) cm = fabs(b1.re);
+            if (fabs(b1.im) > cm) cm = fabs(b1.im);
+            e = 0;
+            if (cm > 0) (void)frexp(cm, &e);
+            f = ldexp(1.0, -e);
+            a1 = mist_mie_cplx(a1.re * f, a1.im * f);
+            b1 = mist_mie_cplx(b1.re * f, b1.im * f);
+            mist_mie__store(coef, 1, a1, b1);
+            s.n_terms = 1;
+            s.amp_scale_ = ldexp(x2 * x, e);
+        }
         s2 = 3 * (mist_mie__abs2(a1) + mist_mie__abs2(b1));
         s.p_norm_ = s2 > 0 ? 1 / (4 * MIST_MIE__PI * s2) : 0;
         return s;
@@ -594,6 +616,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     s.q_back = mist_mie__abs2(back) * ix * ix;
     s.g = qsca > 0 ? 2 * gsum / qsca : 0;
     s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
+    if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal: |m-1| x^3
+                                                            below ~1e-154 (see the top) */
     return s;
 }
 

@@ -1441,6 +1441,29 @@ static void test_bad_input(void)
     mt_check(s.status == MIST_MIE_OK && s.q_sca == 0 && mist_mie_phase(&s, 0.5) == 0,
              "m = 1, tiny x");
     mist_mie_sphere_free(&s);
+    /* m = 1 + 1e-158 i ... 1e-165 i: the dipole's coefficients' squares
+     * leave the range, while p is their ratio: the dipole's 3 (1 + mu^2) /
+     * (16 pi) (closed form; 2 ulps for the roundings of the scaled sum).
+     * The previous header gave +inf (1e-158, 1e-161) and 0 (1e-165), status
+     * OK; an independent check found it.  The series (x = 1e-3) there:
+     * finite (0: documented, the accuracy near m = 1 at the top) */
+    {
+        static const double mi[] = { 1e-150, 1e-158, 1e-161, 1e-165 };
+        size_t k;
+        for (k = 0; k < sizeof mi / sizeof *mi; ++k) {
+            double p, pd = 3 * (1 + 0.25) / (16 * PI);
+            s = mist_mie_sphere_new(1e-20, mist_mie_cplx(1, mi[k]));
+            p = mist_mie_phase(&s, 0.5);
+            mt_check(s.status == MIST_MIE_OK && near_rel(p, pd, 4.5e-16),
+                     "dipole, m = 1 + %g i: p(0.5) %.17g, closed form %.17g", mi[k], p, pd);
+            mist_mie_sphere_free(&s);
+            s = mist_mie_sphere_new(1e-3, mist_mie_cplx(1, mi[k]));
+            p = mist_mie_phase(&s, 0.5);
+            mt_check(s.status == MIST_MIE_OK && p >= 0 && p < 1,
+                     "series, m = 1 + %g i: p(0.5) %g", mi[k], p);
+            mist_mie_sphere_free(&s);
+        }
+    }
 
     /* averages */
     {
