@@ -641,7 +641,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_new(double x, mist_mie_complex m)
 }
 
 /* Frees the memory of a sphere from mist_mie_sphere_new (any other sphere:
- * nothing) and zeroes it.  s may be NULL. */
+ * nothing) and zeroes it, status MIST_MIE_EDOMAIN (so a freed sphere gives
+ * 0 everywhere and a second free is harmless).  s may be NULL. */
 MIST_MIE_FUNC void mist_mie_sphere_free(mist_mie_sphere *s)
 {
     if (!s) return;
