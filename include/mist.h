@@ -732,6 +732,7 @@ MIST__F MIST__T MIST__FN(mist__fma)(MIST__T a, MIST__T b, MIST__T c)
  * HG and Rayleigh samplers in double-double). */
 /* the largest finite T */
 #define MIST__BIG   ((MIST__T)(MIST__DBL ? DBL_MAX : (double)FLT_MAX))
+#define MIST__TMIN  ((MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN))   /* smallest normal */
 
 /* s + *e = a + b exactly where |a| >= |b| (or a = 0; Dekker's Fast2Sum). */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__fast_two_sum)(MIST__T a, MIST__T b, MIST__T *e)
@@ -3300,7 +3301,7 @@ MIST__F MIST__T MIST__FN(mist__expmul_s)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
 MIST__F MIST__T MIST__FN(mist__expmul_k)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
                                          MIST__T d, MIST__T xh, MIST__T xl, int k0)
 {
-    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
+    const MIST__T tmin = MIST__TMIN;
     MIST__T r;
     int k;
     if (k0 == 0 && xh > -MIST__XLIM && xh < MIST__XLIM && c1 > MIST__C(0) && c2 > MIST__C(0)
@@ -3342,7 +3343,7 @@ MIST__F MIST__T MIST__FN(mist__hmul)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T
  * independent check); *k goes to mist__expmul_k's exponent. */
 MIST__F MIST__T MIST__FN(mist__hly)(MIST__T ly, int *k)
 {
-    *k = ly < (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN) ? -2 * (MIST__MB + 1) : 0;
+    *k = ly < MIST__TMIN ? -2 * (MIST__MB + 1) : 0;
     return MIST__FN(mist__ldexp)(ly, -*k);
 }
 
@@ -3372,7 +3373,7 @@ typedef struct MIST__HRAY {
 MIST__F MIST__T MIST__FN(mist__expmul_f)(MIST__T c1, MIST__T c2, MIST__T c3, MIST__T c4,
                                          MIST__T d, MIST__T xh, MIST__T xl, int *k)
 {
-    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
+    const MIST__T tmin = MIST__TMIN;
     MIST__T r = MIST__FN(mist__expmul)(c1, c2, c3, c4, d, xh, xl);
     if (r >= tmin && r <= MIST__BIG) return MIST__FN(mist__frexp)(r, k);
     return MIST__FN(mist__expmul_s)(c1, c2, c3, c4, d, xh, xl, 0, k);
@@ -3395,7 +3396,7 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
          * divided by H); by 1/2 where a sum overflows though its terms do
          * not.  The quotients stay. */
         const MIST__T up = MIST__C(1) / (MIST__EPS * MIST__EPS);
-        const MIST__T tiny = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN) * up;
+        const MIST__T tiny = MIST__TMIN * up;
         MIST__T sc = H < tiny ? up : MIST__C(1), Hs = sc * H, f = 0, fe = 0;
         int pass;
         for (pass = 0; pass < 3; ++pass) {
@@ -3676,7 +3677,7 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
                                      const MIST__T *H, const MIST__T *lnd, int k, int i, int c,
                                      MIST__T yy, MIST__T *err)
 {
-    const MIST__T tmin = (MIST__T)(MIST__DBL ? DBL_MIN : (double)FLT_MIN);
+    const MIST__T tmin = MIST__TMIN;
     MIST__T ik = H[k] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[k]) : MIST__C(0);
     MIST__T ii = H[i] <= MIST__BIG ? MIST__FN(mist__pos)(MIST__C(1) / H[i]) : MIST__C(0), x, lr, q, r;
     x = ik == ii ? MIST__C(0) : (yy - ls[k].base) * (ik - ii);
@@ -4367,6 +4368,7 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 #undef MIST__HFOG
 #undef MIST__HRAY
 #undef MIST__BIG
+#undef MIST__TMIN
 #undef MIST__XLIM
 /* end of the analytic height fog */
 #endif /* !MIST_NO_HFOG */

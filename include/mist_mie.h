@@ -1114,47 +1114,30 @@ MIST_MIE_FUNC mist_mie_avg mist_mie__avg_zero(int status)
     return a;
 }
 
-/* ln of int_{x0}^{x1} x^(a-1) e^-x dx for 0 < a <= 3, 0 <= x0 < x1 <= inf
- * (lower incomplete gamma by its series below x = a + 1, the upper by its
- * continued fraction above; the difference of the one that does not
- * cancel).  -inf where it underflows. */
-MIST_MIE_FUNC double mist_mie__lninc(double a, double x)   /* ln gamma(a, x) lower */
+/* ln gamma(a, x) = ln int_0^x t^(a-1) e^-t dt for 0 < a <= 3, x >= 0 (the
+ * lower incomplete gamma: its series up to x = a + 1, above it Gamma(a)
+ * less the upper one's continued fraction, Lentz).  -inf at x = 0. */
+MIST_MIE_FUNC double mist_mie__lngamlow(double a, double x)
 {
-    double s = 1, t = 1, n;
     if (!(x > 0)) return -(double)INFINITY;
-    for (n = 1; n < 500; ++n) { t *= x / (a + n); s += t; if (t < s * 1e-17) break; }
-    return a * log(x) - x + log(s) - log(a);
-}
-
-MIST_MIE_FUNC double mist_mie__lnincu(double a, double x)  /* ln Gamma(a, x) upper */
-{
-    /* Lentz: Gamma(a, x) = e^-x x^a / (x + 1 - a - 1 (1 - a) / (x + 3 - a - ...)) */
-    double b = x + 1 - a, c = 1e300, d = 1 / b, f = d, an, del;
-    int i;
-    if (!(x < (double)INFINITY)) return -(double)INFINITY;
-    for (i = 1; i < 500; ++i) {
-        an = -i * (i - a);
-        b += 2;
-        d = an * d + b;  if (fabs(d) < 1e-300) d = 1e-300;
-        c = b + an / c;  if (fabs(c) < 1e-300) c = 1e-300;
-        d = 1 / d;  del = d * c;  f *= del;
-        if (fabs(del - 1) < 1e-16) break;
+    if (x <= a + 1) {
+        double s = 1, t = 1, n;
+        for (n = 1; n < 500; ++n) { t *= x / (a + n); s += t; if (t < s * 1e-17) break; }
+        return a * log(x) - x + log(s) - log(a);
+    } else {   /* Gamma(a, x) = e^-x x^a / (x + 1 - a - 1 (1 - a) / (x + 3 - a - ...)) */
+        double b = x + 1 - a, c = 1e300, d = 1 / b, f = d, an, del, lu;
+        int i;
+        for (i = 1; i < 500 && x < (double)INFINITY; ++i) {
+            an = -i * (i - a);
+            b += 2;
+            d = an * d + b;  if (fabs(d) < 1e-300) d = 1e-300;
+            c = b + an / c;  if (fabs(c) < 1e-300) c = 1e-300;
+            d = 1 / d;  del = d * c;  f *= del;
+            if (fabs(del - 1) < 1e-16) break;
+        }
+        lu = x < (double)INFINITY ? a * log(x) - x + log(f) : -(double)INFINITY;
+        return lgamma(a) + log1p(-exp(lu - lgamma(a)));
     }
-    return a * log(x) - x + log(f);
-}
-
-MIST_MIE_FUNC double mist_mie__lngammaint(double a, double x0, double x1)
-{
-    double m = a + 1;
-    if (x1 <= m)                            /* both lower: gamma(x1) - gamma(x0) */
-        return mist_mie__lninc(a, x1) + log1p(-exp(mist_mie__lninc(a, x0)
-                                                   - mist_mie__lninc(a, x1)));
-    if (x0 >= m)                            /* both upper: Gamma(x0) - Gamma(x1) */
-        return mist_mie__lnincu(a, x0) + log1p(-exp(mist_mie__lnincu(a, x1)
-                                                    - mist_mie__lnincu(a, x0)));
-    /* across a + 1 (a <= 3: every term below 2, none cancels much) */
-    return log(exp(mist_mie__lninc(a, m)) - exp(mist_mie__lninc(a, x0))
-               + exp(mist_mie__lnincu(a, m)) - exp(mist_mie__lnincu(a, x1)));
 }
 
 /* Node i of the size quadrature: its radius *r and the log of its weight
@@ -1287,7 +1270,7 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
              * at r = 0 (singular for v_eff > 1/3), and the nodes in r missed
              * its number: 3.8x at v_eff = 0.49, 2.3e-5 at 0.3 (an
              * independent check).  The number (sum of the weights) is then
-             * the exact integral over [t0, t1] (incomplete gamma); the
+             * the exact integral over [0, t1] (incomplete gamma); the
              * cross sections' integrands, n r^2 Q and above, are smooth
              * enough for the nodes.  Only where the range holds r = 0 and
              * the panels resolve the law's scale b (else the numerators
@@ -1296,7 +1279,7 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
             double al = (1 - 3 * dist->p2) / dist->p2, b = dist->p1 * dist->p2;
             if (al < 2 && t0 == 0 && h <= 64 * b)  /* (b / h: lengths x 2^k, same bits) */
                 swx = 2 * b / h * exp((al > 0 ? al - al * log(al) : 0)
-                                      + mist_mie__lngammaint(al + 1, t0 / b, t1 / b) - lwmax);
+                                      + mist_mie__lngamlow(al + 1, t1 / b) - lwmax);
         }
     }
     }

@@ -1315,6 +1315,15 @@ static void test_bad(void)
         mt_check(mist_segment_linear(1, 1, 1, 1, nan, &tr) == 0 && tr == 1 &&
                  mist_segment_linear(1, 1, 1, 1, -3, &tr) == 0 && tr == 1, "segment bad length");
         mt_check(mist_segment_linear(2, 7, 3, 1, INFINITY, &tr) == 1.5 && tr == 0, "segment length inf");
+        /* +-inf sources: +-the largest finite value (documented) */
+        mt_check(mist_segment_linear(2, 2, INFINITY, 0, 1, &tr)
+                     == mist_segment_linear(2, 2, DBL_MAX, 0, 1, &tr)
+                 && mist_segment_linear(2, 2, 0, -INFINITY, 1, &tr)
+                     == mist_segment_linear(2, 2, 0, -DBL_MAX, 1, &tr)
+                 && mist_segment_linear(2, 2, INFINITY, 0, 1, &tr) < INFINITY
+                 && mist_segment_linearf(2, 2, INFINITY, 0, 1, NULL)
+                     == mist_segment_linearf(2, 2, FLT_MAX, 0, 1, NULL),
+                 "segment infinite source");
     }
     /* no NaN, T in [0, 1], L >= 0 for any finite input (extremes included) */
     {
