@@ -79,4 +79,76 @@ MP_FN double hfog_printed(double b, double y0, double wy, double s, double H,
                                   double bt, double bs) { I18(double, exp) }
 #undef I18
 
+/* [BH83] Appendix A (BHMIE), the textbook Lorenz-Mie series as printed:
+ * nstop = x + 4 x^(1/3) + 2 terms; D_n(mx) by the downward recurrence
+ * from nmx = max(nstop, |mx|) + 15, started at 0; psi_n and chi_n upward
+ * from n = 0; a_n, b_n as its two quotients.  In real arithmetic (no
+ * <complex.h>: MSVC), complex division done as printed (no scaling).
+ * The baseline of mist_mie_sphere_make (bench/mist_bench.c), which adds
+ * Lentz's start for D_n, psi_n downward past x, the series' tail past
+ * nstop and range checks.  bhmie_nmx: the D_n array's last index;
+ * d: 2 (nmx + 1) doubles; ab: 4 nstop doubles (a_n then b_n, re and im,
+ * n = 1..nstop).  Returns nstop; *qsum = sum (2n+1)(|a_n|^2 + |b_n|^2). */
+static inline int bhmie_nstop(double x) { return (int)(x + 4 * cbrt(x) + 2); }
+static inline int bhmie_nmx(double x, double mr, double mi)
+{
+    double y = sqrt(mr * mr + mi * mi) * x;
+    int nstop = bhmie_nstop(x);
+    return (int)(y > nstop ? y : nstop) + 15;
+}
+static inline void bhmie_cdiv(double ar, double ai, double br, double bi, double *r, double *i)
+{
+    double q = br * br + bi * bi;
+    *r = (ar * br + ai * bi) / q;
+    *i = (ai * br - ar * bi) / q;
+}
+static inline int bhmie_printed(double x, double mr, double mi, double *d, double *ab,
+                                double *qsum)
+{
+    int nstop = bhmie_nstop(x), nmx = bhmie_nmx(x, mr, mi), n;
+    double yr = mr * x, yi = mi * x, yy = yr * yr + yi * yi;
+    double psi0 = cos(x), psi1 = sin(x), chi0 = -sin(x), chi1 = cos(x), q = 0;
+    d[2 * nmx] = 0; d[2 * nmx + 1] = 0;
+    for (n = nmx; n > 1; --n) {                 /* D_{n-1} = n/y - 1/(D_n + n/y) */
+        double er = n * yr / yy, ei = -n * yi / yy, tr, ti;
+        bhmie_cdiv(1, 0, d[2 * n] + er, d[2 * n + 1] + ei, &tr, &ti);
+        d[2 * n - 2] = er - tr; d[2 * n - 1] = ei - ti;
+    }
+    for (n = 1; n <= nstop; ++n) {
+        double psi = (2 * n - 1) * psi1 / x - psi0, chi = (2 * n - 1) * chi1 / x - chi0;
+        double dr, di, tr, ti, ar, ai, br, bi;
+        bhmie_cdiv(d[2 * n], d[2 * n + 1], mr, mi, &dr, &di);          /* D_n / m + n/x */
+        tr = dr + n / x; ti = di;
+        bhmie_cdiv(tr * psi - psi1, ti * psi, tr * psi + ti * chi - psi1,
+                   ti * psi - tr * chi + chi1, &ar, &ai);
+        dr = mr * d[2 * n] - mi * d[2 * n + 1];                          /* m D_n + n/x */
+        di = mr * d[2 * n + 1] + mi * d[2 * n];
+        tr = dr + n / x; ti = di;
+        bhmie_cdiv(tr * psi - psi1, ti * psi, tr * psi + ti * chi - psi1,
+                   ti * psi - tr * chi + chi1, &br, &bi);
+        ab[2 * n - 2] = ar; ab[2 * n - 1] = ai;
+        ab[2 * nstop + 2 * n - 2] = br; ab[2 * nstop + 2 * n - 1] = bi;
+        q += (2 * n + 1) * (ar * ar + ai * ai + br * br + bi * bi);
+        psi0 = psi1; psi1 = psi; chi0 = chi1; chi1 = chi;
+    }
+    *qsum = q;
+    return nstop;
+}
+/* BHMIE's angle sums S1, S2 at mu (pi_n, tau_n upward), as a phase
+ * function per steradian: (|S1|^2 + |S2|^2) / (4 pi qsum) */
+static inline double bhmie_phase_printed(const double *ab, int nstop, double qsum, double mu)
+{
+    double p0 = 0, p1 = 1, s1r = 0, s1i = 0, s2r = 0, s2i = 0;
+    int n;
+    for (n = 1; n <= nstop; ++n) {
+        double f = (2.0 * n + 1) / (n * (n + 1.0)), tau = n * mu * p1 - (n + 1) * p0, p2;
+        const double *a = ab + 2 * n - 2, *b = ab + 2 * nstop + 2 * n - 2;
+        s1r += f * (a[0] * p1 + b[0] * tau); s1i += f * (a[1] * p1 + b[1] * tau);
+        s2r += f * (a[0] * tau + b[0] * p1); s2i += f * (a[1] * tau + b[1] * p1);
+        p2 = ((2.0 * n + 1) * mu * p1 - (n + 1.0) * p0) / n;
+        p0 = p1; p1 = p2;
+    }
+    return (s1r * s1r + s1i * s1i + s2r * s2r + s2i * s2i) / (4 * 3.14159265358979323846 * qsum);
+}
+
 #endif
