@@ -431,7 +431,8 @@ typedef struct mist_phase {
     int    kind;                /* 0, 2: (1 - w) HG(g_hg) + w Draine(g, alpha), in one
                                    lobe (0) or two (2); 1: Rayleigh */
     double g_hg, g, alpha, w;   /* sanitised */
-    double ge, c0, c1, a1, b1, a2; /* density (a1 + b1 u^2)/V(ge)^3 [+ a2/V(g_hg)^3];
+    double ge, c0, c1, a1, b1, a2; /* density (a1 + b1 u^2)/V(ge)^3 (kind 0, 1), or
+                                      w (a1 + b1 u^2)/V(ge)^3 + a2/V(g_hg)^3 (2);
                                       Draine's weights c0, c1 */
     double f0[4];               /* F_g(0), F_-g(0): hi + lo pairs */
     double tab[3 * MIST__PHASE_K + 2]; /* Draine's u(xi) at xi = j/K, slopes, and
@@ -2244,8 +2245,11 @@ MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 /* except where the inverse CDF is ill-conditioned: both samplers meet the  */
 /* bar, within a few eps of xi, but where the density is tiny (Draine at    */
 /* alpha 1e100 near u = 0) that is up to 1e6 eps of u apart (measured).     */
-/* A fog whose w_d is so small that w_d times the Draine normalisation      */
-/* underflows loses that lobe's (subnormal) share of the density.           */
+/* A fog with tiny w_d (and 1 - g_d^2) keeps its Draine lobe: w_d applies  */
+/* after the lobe's division (before the eighth session of 2026-11-27 it    */
+/* multiplied the normalisation, which underflowed: w_d 2^-1020 with g_hg   */
+/* = 1 and g_d = -(1 - 2^-53) gave density 0 at u = -1 where the lobe's is  */
+/* ~1e-276; found by an independent check; tests/test_domain.c).            */
 /* HG, Draine, Cornette-Shanks and the fog are one mixture                  */
 /* (1 - w) HG(g_hg) + w Draine(g, alpha): HG is w = 0, Draine w = 1.        */
 /* mist_phase_sample is the inverse CDF (monotone in xi) for every kind but */
@@ -2288,10 +2292,10 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         p.ge = p.g;
         p.a1 = p.w * nd * c0 + (p.w >= MIST__C(1) ? MIST__C(0) : (MIST__C(1) - p.w) * nh);
         p.b1 = p.w * nd * c1; p.a2 = MIST__C(0);
-    } else {                                /* two lobes */
-        p.kind = 2;
-        p.ge = p.g; p.a1 = p.w * nd * c0; p.b1 = p.w * nd * c1;
-        p.a2 = (MIST__C(1) - p.w) * nh;
+    } else {                                /* two lobes: w applied after the */
+        p.kind = 2;                         /* division (w nd c0 underflowed  */
+        p.ge = p.g; p.a1 = nd * c0; p.b1 = nd * c1;   /* for tiny w and 1 - g^2, */
+        p.a2 = (MIST__C(1) - p.w) * nh;     /* a normal density lost) */
     }
 #ifdef MIST__W
     MIST__WFN(mist__draine_c)((MIST__W)p.alpha, &c0w, &c1w);
@@ -2390,7 +2394,8 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
     u = MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1));
     if (!p) return MIST__C(MIST__INV4PI);
     r = MIST__FN(mist__phase_lobe)(p->ge, p->a1, p->b1, u);
-    if (p->kind == 2) r += MIST__FN(mist__phase_lobe)(p->g_hg, p->a2, MIST__C(0), u);
+    if (p->kind == 2)
+        r = p->w * r + MIST__FN(mist__phase_lobe)(p->g_hg, p->a2, MIST__C(0), u);
     return r;
 }
 

@@ -405,6 +405,49 @@ static void test_prepared(void)
                     bad += !(pdf == mist_phase_eval(&pf, uu) && isfinite(o.x) && isfinite(o.z));
                 }
             }
+    {   /* a fog with tiny w_d and a Draine lobe near the Dirac limit: the
+         * lobe's density at u = -1 is normal although w_d times its
+         * normalisation underflows (until the eighth session of 2026-11-27
+         * the prepared density was 0 there, and the pdf of a sample 0).
+         * Reference: the closed form w (1 - g^2) / (4 pi cn V^3) (1 + a u^2),
+         * V = 1 + g at u = -1, g_hg = 1 adding 0 there, divided before w
+         * multiplies (no underflow in double); bar 8 eps relative: a few
+         * roundings on each side.  Normal w_d only (-ffast-math reads a
+         * subnormal as 0). */
+        static const double wd[] = { 0x1p-1020, 0x1p-1000, 1e-300, 0x1p-1022 };
+        static const float wfs[] = { 1e-37f, 0x1p-126f, 0x1p-100f };
+        const double gd = -(1 - 0x1p-53);
+        const float gfd = -(1 - 0x1p-24f);
+        mist_vec3f wif = { 0.3f, -0.4f, 0.5f };
+        int okd = 1, okf = 1;
+        size_t j;
+        for (j = 0; j < sizeof wd / sizeof *wd; ++j) {
+            mist_fog fog = { 1, gd, 1, wd[j] };
+            mist_phase pf = mist_phase_fog(fog);
+            double v = 1 + gd, ref = (1 - gd) * (1 + gd) / (v * v * v) / (4 * 3.14159265358979323846)
+                       * 2 / (1 + (1 + 2 * gd * gd) / 3) * wd[j];
+            double p = mist_phase_eval(&pf, -1), pdf = -1;
+            double us = mist_phase_sample(&pf, wd[j] / 4);
+            (void)mist_phase_sample_dir(&pf, wi, wd[j] / 4, 0.3, &pdf);
+            okd &= fabs(p - ref) <= 8 * DBL_EPSILON * ref && near_d(p, mist_fog_eval(fog, -1))
+                   && pdf > 0 && pdf == mist_phase_eval(&pf, us);
+        }
+        for (j = 0; j < sizeof wfs / sizeof *wfs; ++j) {
+            mist_fogf fog = { 1, gfd, 1, wfs[j] };
+            mist_phasef pf = mist_phase_fogf(fog);
+            double v = 1 + (double)gfd, g2 = (double)gfd * gfd;
+            double ref = (1 - (double)gfd) * v / (v * v * v) / (4 * 3.14159265358979323846)
+                         * 2 / (1 + (1 + 2 * g2) / 3) * wfs[j];
+            float p = mist_phase_evalf(&pf, -1), pdf = -1;
+            float us = mist_phase_samplef(&pf, wfs[j] / 4);
+            (void)mist_phase_sample_dirf(&pf, wif, wfs[j] / 4, 0.3f, &pdf);
+            okf &= fabs(p - ref) <= 8 * FLT_EPSILON * ref + 0x1p-149 &&
+                   near_f(p, mist_fog_evalf(fog, -1)) && pdf > 0 &&
+                   pdf == mist_phase_evalf(&pf, us);
+        }
+        mt_check(okd, "prepared fog, tiny w_d: the Draine lobe's density kept (double)");
+        mt_check(okf, "prepared fog, tiny w_d: the Draine lobe's density kept (float)");
+    }
     mt_check(bad == 0, "prepared = unprepared over bad input (double): %d differ", bad);
     mt_check(badf == 0, "prepared = unprepared over bad input (float): %d differ", badf);
     {   /* Rayleigh, and NULL: isotropic */
