@@ -2207,7 +2207,8 @@ MIST__F int MIST__FN(mist__fog_pick)(MIST__T xi, MIST__T w, MIST__T *x, MIST__T 
     return dr;
 }
 
-/* Fog: a sample u of the mixture, from one xi in [0, 1]. */
+/* Fog: a sample u of the mixture, from one xi in [0, 1].  Domain: xi in
+ * [0, 1] (clamped; NaN taken as 0); fog sanitised as mist_fog_make. */
 MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 {
     MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1)), x, s;
@@ -2348,7 +2349,8 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
 }
 
 /* Henyey-Greenstein, Draine, Cornette-Shanks (Draine at alpha = 1), the
- * Jendersie-d'Eon fog (sanitised as mist_fog_make), Rayleigh: prepared. */
+ * Jendersie-d'Eon fog (sanitised as mist_fog_make), Rayleigh: prepared.
+ * Domain: any parameters, sanitised as the unprepared functions do. */
 MIST__F MIST__PHASE MIST__FN(mist_phase_hg)(MIST__T g)
 {
     return MIST__FN(mist__phase_make)(0, g, MIST__C(0), MIST__C(0), MIST__C(0));
@@ -2618,7 +2620,9 @@ MIST__F MIST__V3 MIST__FN(mist_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi)
 
 /* Scattered direction and its pdf (= the density, per steradian) for each
  * phase function.  wi: the incident PROPAGATION direction; xi1 picks
- * cos(theta) (exact inverse CDF), xi2 the azimuth.  pdf may be NULL. */
+ * cos(theta) (exact inverse CDF), xi2 the azimuth.  pdf may be NULL.
+ * Domain: the phase function's parameters as its sampler's; wi any vector
+ * (zero, NaN, inf: (0, 0, 1)); xi1, xi2 in [0, 1] (clamped; NaN as 0). */
 MIST__F MIST__V3 MIST__FN(mist_hg_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
                                                 MIST__T *pdf)
 {
@@ -2676,6 +2680,9 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* and clang vectorise.  The unprepared Draine sampler (iterations, below   */
 /* MIST_DRAINE_PREPARE_N) and the samplers in long double are plain loops   */
 /* over the scalar function.                                                */
+/* Domain of each: the scalar function's, element by element; n = 0 does   */
+/* nothing (in, out may then be NULL); out == in is allowed, other overlaps */
+/* are not.                                                                 */
 /* ======================================================================== */
 
 /* 32: gcc -O3 completely unrolls loops of up to 16 iterations before it
@@ -3636,7 +3643,8 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
     if (inscatter) { inscatter->r = ls[0]; inscatter->g = ls[1]; inscatter->b = ls[2]; }
 }
 
-/* Transmittance alone (per colour band). */
+/* Transmittance alone (per colour band).  Domain: as mist_hfog_eval (and
+ * the two below). */
 MIST__F MIST__RGB MIST__FN(mist_hfog_transmittance)(const MIST__HFOG *fog, MIST__V3 origin,
                                                     MIST__V3 dir, MIST__T length)
 {
@@ -3707,7 +3715,8 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
 #endif
 
 /* Several exponential layers along one ray: see the section comment.
- * Layer k contributes its own coefficients, scale height and Mie phase
+ * Domain: n >= 1 layers (layers NULL or n < 1: transmittance 1, in-scatter
+ * and bound 0), each as mist_hfog_eval's fog.  Layer k contributes its own coefficients, scale height and Mie phase
  * function; the lights (sun, ambient, sun_extinction) are those of
  * layers[0].  At most MIST_HFOG_MAX_LAYERS layers are used.  `pieces` is
  * the number of pieces the ray is cut into for the in-scatter (<= 0: 8; at

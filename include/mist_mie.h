@@ -258,6 +258,7 @@ typedef struct mist_mie_avg {
 /* Small helpers                                                            */
 /* ======================================================================== */
 
+/* A complex number re + i im (any values; the functions check theirs). */
 MIST_MIE_FUNC MIST_MIE__API_HOT mist_mie_complex mist_mie_cplx(double re, double im)
 {
     mist_mie_complex z;
@@ -914,6 +915,8 @@ MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
 /*    radius r_g, geometric standard deviation sigma_g > 1.                 */
 /*  table: given radii r_i > 0 and weights w_i >= 0 (n(r_i) times the       */
 /*    caller's quadrature weight).                                          */
+/* The constructors only store their parameters; mist_mie_average checks    */
+/* them (outside these domains: status MIST_MIE_EDOMAIN, every number 0).   */
 /* ======================================================================== */
 
 MIST_MIE_FUNC mist_mie_dist mist_mie__dist(int kind, double p1, double p2, double p3)
