@@ -1305,6 +1305,40 @@ static void test_bad(void)
         mt_check(fabs(t.r - t2.r) <= 1e-14 * t2.r && fabs(l.g - l2.g) <= 1e-13 * l2.g
                  && b.g <= 1e-13 * l2.g, "layers of one scale height: exact (%.17g %.17g, bound %g)",
                  l.g, l2.g, b.g);
+        /* pieces <= 0 is the documented 8, > 64 is 64: bit for bit (a
+         * mutation audit: a default of 2 moved the in-scatter by 120%
+         * within its own, larger bound, and no test saw it) */
+        {
+            mist_rgb t8, l8, b8, t0, l0, b0, tn, ln, bn;
+            ly[1].scale_height = 900; ly[1].density = 0.3;
+            mist_hfog_layers_eval(ly, 2, o, d, 500, 8, &t8, &l8, &b8);
+            mist_hfog_layers_eval(ly, 2, o, d, 500, 0, &t0, &l0, &b0);
+            mist_hfog_layers_eval(ly, 2, o, d, 500, -3, &tn, &ln, &bn);
+            mt_check(l0.r == l8.r && l0.b == l8.b && b0.g == b8.g && t0.r == t8.r &&
+                     ln.g == l8.g && bn.r == b8.r, "layers: pieces 0 and -3 are 8");
+            mist_hfog_layers_eval(ly, 2, o, d, 500, 64, &t8, &l8, &b8);
+            mist_hfog_layers_eval(ly, 2, o, d, 500, 1000, &t0, &l0, &b0);
+            mt_check(l0.r == l8.r && b0.g == b8.g, "layers: pieces 1000 is 64");
+        }
+    }
+    /* the direction's length does not matter: it is normalised (a
+     * mutation audit: a tolerance of 1e-3 instead of 16 eps for taking dir
+     * as unit moved T by 1.3e-3 and no test saw it).  Scaled by 1 + 1e-6,
+     * 3, 1e-200 and 1e200: within 64 eps (the normalised vector's rounding,
+     * ~1 ulp a component, times the optical depth's condition, here < 2) */
+    {
+        static const double sc[] = { 1 + 1e-6, 3, 1e-200, 1e200 };
+        size_t j;
+        int ok = 1;
+        mist_hfog_eval(&f, o, d, 500, &t2, &l2);
+        for (j = 0; j < sizeof sc / sizeof *sc; ++j) {
+            mist_vec3 ds = d;
+            ds.x *= sc[j]; ds.y *= sc[j]; ds.z *= sc[j];
+            mist_hfog_eval(&f, o, ds, 500, &t, &l);
+            ok &= fabs(t.g - t2.g) <= 64 * DBL_EPSILON * t2.g &&
+                  fabs(l.g - l2.g) <= 64 * DBL_EPSILON * l2.g;
+        }
+        mt_check(ok, "the direction's length does not matter");
     }
     /* segment */
     {
