@@ -179,6 +179,45 @@ static void test_directions(void)
  * exact; then |v|^2, sqrt, 1/x and a product: 3 roundings of ~1/2 eps and
  * the sum's).  Control: the bare formula (no scaling, in T)
  * over the same vectors must fail (overflow and underflow of |v|^2). */
+/* The direction's sine near u = +-1: the part of mist_dir_from_cos(n, u,
+ * xi) across n has length sin theta = sqrt((1 - u)(1 + u)), which 1 - u^2
+ * would lose where u is within a few ulps of +-1 (a mutation audit: with
+ * sqrt(1 - u u), 3.6e-5 off at float u = 1 - 3 2^-14, and no test saw it).
+ * n along each axis, so the across part is two components exactly; u =
+ * +-(1 - k ulp), k = 1..300; against sqrt((1 - u)(1 + u)) in long double:
+ * within 4 eps (the sine's rounding and the azimuth's cos, sin). */
+static void test_dir_sine(void)
+{
+    static const double ax[6][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { 0, -1, 0 },
+                                     { -1, 0, 0 }, { 0, 1, 0 } };
+    double worst = 0, worstf = 0;
+    int a, k, sg;
+    for (a = 0; a < 6; ++a)
+        for (sg = -1; sg <= 1; sg += 2)
+            for (k = 1; k <= 300; ++k) {
+                mist_vec3 n = { ax[a][0], ax[a][1], ax[a][2] }, o;
+                mist_vec3f nf = { (float)ax[a][0], (float)ax[a][1], (float)ax[a][2] }, of;
+                double u = sg * (1 - k * 0x1p-53), s1, s2, e;
+                float uf = (float)sg * (1 - (float)k * 0x1p-24f);
+                long double r;
+                o = mist_dir_from_cos(n, u, 0.3 + k * 1e-3);
+                of = mist_dir_from_cosf(nf, uf, 0.3f + (float)k * 1e-3f);
+                s1 = ax[a][0] != 0 ? o.y : o.x;
+                s2 = ax[a][2] != 0 ? o.y : o.z;
+                r = sqrtl((1 - (long double)u) * (1 + (long double)u));
+                e = (double)(fabsl(sqrtl((long double)s1 * s1 + (long double)s2 * s2) - r) / r);
+                if (e > worst) worst = e;
+                s1 = ax[a][0] != 0 ? of.y : of.x;
+                s2 = ax[a][2] != 0 ? of.y : of.z;
+                r = sqrtl((1 - (long double)uf) * (1 + (long double)uf));
+                e = (double)(fabsl(sqrtl((long double)s1 * s1 + (long double)s2 * s2) - r) / r);
+                if (e > worstf) worstf = e;
+            }
+    mt_check(worst <= 4 * DBL_EPSILON && worstf <= 4 * FLT_EPSILON,
+             "direction's sine near u = +-1: worst %.2f eps (double), %.2f eps (float)",
+             worst / DBL_EPSILON, worstf / FLT_EPSILON);
+}
+
 static void test_normalize(void)
 {
     mt_rng r = { 909 };
@@ -480,6 +519,7 @@ int main(void)
     test_alpha();
     test_u_xi();
     test_directions();
+    test_dir_sine();
     test_normalize();
     test_fog();
     test_sweep();
