@@ -1312,7 +1312,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_dbl)(MIST__T g, MIST__T xi)
  * one form (mist__hg_one); double in double-double where fma is one
  * instruction or long double is no wider (mist__hg_ddu), else by the
  * three forms in long double (0.5 ulp instead of up to 4.4 in double,
- * measured); the long double pass itself by mist__hg_dbl. */
+ * measured; but near u = 0 an absolute error up to 2^-63, long double's
+ * ulp at 1, where double-double's is 2^-104: test_accuracy's "double HG
+ * samples correctly rounded", within the bar's xi term, which is ~1e-16
+ * there); the long double pass itself by mist__hg_dbl. */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_u)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
