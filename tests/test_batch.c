@@ -3,7 +3,10 @@
  * bit: mist_hg_eval_n, mist_hg_sample_n, mist_draine_eval_n,
  * mist_draine_sample_n, mist_rayleigh_eval_n, mist_rayleigh_sample_n,
  * the prepared mist_phase_eval_n and mist_phase_sample_n (HG and Draine:
- * against mist_phase_eval and mist_phase_sample) and their float forms
+ * against mist_phase_eval and mist_phase_sample; and mist_phase_eval_n of
+ * a fog with two lobes, HG 0.9 and Draine (g, alpha), w_d 0.4, which a
+ * mutation audit found untested: a batch that dropped its HG lobe passed
+ * every test but the stress run) and their float forms
  * (_nf).
  *
  * Inputs: random values over and beyond the domain, and the edges and bad
@@ -68,10 +71,11 @@ static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PRE
                               MIST_DRAINE_PREPARE_N, NMAX };
 
 enum { HG_EVAL, HG_SAMPLE, DR_EVAL, DR_SAMPLE, RL_EVAL, RL_SAMPLE, PD_EVAL, PD_SAMPLE,
-       PH_SAMPLE, NKIND };
+       PH_SAMPLE, PF_EVAL, NKIND };
 static const char *kind_name[] = { "hg_eval", "hg_sample", "draine_eval", "draine_sample",
                                    "rayleigh_eval", "rayleigh_sample", "phase_eval (Draine)",
-                                   "phase_sample (Draine)", "phase_sample (HG)" };
+                                   "phase_sample (Draine)", "phase_sample (HG)",
+                                   "phase_eval (fog: two lobes)" };
 
 /* One definition for both types: T, its suffix S (empty or f). */
 #define CAT_(a, b) a##b
@@ -104,7 +108,7 @@ static double bar_##T(T g, T al, T x, T b)                                      
 /* within twice their bar (DR_BAR) of each other                            */    \
 static int close_##T(int k, T g, T al, T x, T a, T b)                            \
 {                                                                                \
-    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL;       \
+    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL; \
     if (within_##T(a, b, ev ? EVAL_ULPS : FMA_ULPS)) return 1;                   \
     if (!DR_BAR || !(k == DR_SAMPLE || k == PD_SAMPLE) || x != x) return 0;       \
     return fabs((double)a - (double)b) <= 2 * bar_##T(g, al, x, b);              \
@@ -118,7 +122,9 @@ static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      
     static T pg, pa;                                                              \
     static int pk = -1;                                                           \
     if (pk != k || !bits_##T(pg, g) || !bits_##T(pa, a)) {                         \
-        p = k == PH_SAMPLE ? CAT(mist_phase_hg, S)(g) : CAT(mist_phase_draine, S)(g, a); \
+        p = k == PH_SAMPLE ? CAT(mist_phase_hg, S)(g)                            \
+          : k == PF_EVAL ? CAT(mist_phase_fog, S)(CAT(mist_fog_make, S)((T)0.9, g, a, (T)0.4)) \
+          : CAT(mist_phase_draine, S)(g, a);                                      \
         pk = k; pg = g; pa = a;                                                   \
     }                                                                             \
     return &p;                                                                    \
@@ -130,7 +136,8 @@ static T scalar_##T(int k, T g, T a, T x, int n)                                
 {                                                                                 \
     if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N) k = PD_SAMPLE;              \
     switch (k) {                                                                  \
-    case PD_EVAL:   return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
+    case PD_EVAL: case PF_EVAL:                                                   \
+                    return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
     case PD_SAMPLE: case PH_SAMPLE:                                               \
                     return CAT(mist_phase_sample, S)(prep_##T(k, g, a), x);       \
     case HG_EVAL:   return CAT(mist_hg_eval, S)(g, x);                            \
@@ -145,7 +152,8 @@ static T scalar_##T(int k, T g, T a, T x, int n)                                
 static void batch_##T(int k, T g, T a, const T *in, T *out, size_t n)             \
 {                                                                                 \
     switch (k) {                                                                  \
-    case PD_EVAL:   CAT(mist_phase_eval_n, S)(prep_##T(k, g, a), in, out, n); break; \
+    case PD_EVAL: case PF_EVAL:                                                   \
+                    CAT(mist_phase_eval_n, S)(prep_##T(k, g, a), in, out, n); break; \
     case PD_SAMPLE: case PH_SAMPLE:                                               \
         CAT(mist_phase_sample_n, S)(prep_##T(k, g, a), in, out, n); break;        \
     case HG_EVAL:   CAT(mist_hg_eval_n, S)(g, in, out, n); break;                  \
@@ -165,7 +173,7 @@ static void inputs_##T(int k, T g, mt_rng *r, T *x, int n)                      
                      NEXT((T)-1, (T)0), (T)0.5, (T)-0.5, (T)1e-30, (T)-1e-30, g,   \
                      (T)1.5, (T)-0.25 };                                           \
     int i, ns = (int)(sizeof sp / sizeof sp[0]);                                  \
-    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL;        \
+    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL; \
     for (i = 0; i < n; ++i) {                                                     \
         double v = mt_uniform(r);                                                 \
         if (i % 7 == 3) x[i] = sp[(i / 7) % ns];                                  \
