@@ -672,6 +672,15 @@ static void test_fog(void)
     double rb = ref_bar_q(gh, 0, ((qreal)xi - w) / (1 - (qreal)w), xi / (1 - w), bad, 0, &us);
     mt_check(rb > 1, "fog control: xi' rounded to %a gives u=%.17g, u*=%.17g (%.2f x the "
              "bound): must fail", (xi - w) / (1 - w), bad, us, rb);
+    {   /* and mist at that very input, unprepared and prepared (the random
+         * draws below seldom reach g this near -1: a mutation audit found
+         * the mirror near xi' = 1 switched off caught by the stress run
+         * alone) */
+        mist_fog f0 = mist_fog_make(gh, 0.5, 1, w);
+        mist_phase p0 = mist_phase_fog(f0);
+        fog_check(gh, 0.5, 1, w, xi, 0, mist_fog_sample(f0, xi));
+        fog_check(gh, 0.5, 1, w, xi, 0, mist_phase_sample(&p0, xi));
+    }
     for (k = 0; k < n; ++k) {
         double gd = fog_g(&rng), a = (k % 4 == 0) ? 0 : pow(10, -3 + 9 * mt_uniform(&rng));
         double x[8], wf;
