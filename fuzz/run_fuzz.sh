@@ -9,7 +9,7 @@ set -u
 src=$1; work=$2; name=$3; secs=$4
 cc=${MIST_FUZZ_CC:-clang}
 mkdir -p "$work/corpus-$name" || exit 1
-probe="$work/probe.c"
+probe="$work/probe-$name.c"   # one a harness: ctest -j runs them side by side
 printf '%s\n' '#include <stddef.h>' '#include <stdint.h>' \
     'int LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);' \
     'int LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; (void)n; return 0; }' \
