@@ -302,16 +302,23 @@ static double mie_ms(double d_um)
 
 /* a row: f's ns per call, and with a baseline the ratio to it, timed in
  * turns with it (measure_vs) */
+/* A row: f's time per call (f makes N calls; k: times that, for a bench
+ * function making N / k calls, printed in us from 1000 ns on with its
+ * unit), and the ratio to base where named. */
+static void row_k(const char *name, bench_fn f, const char *base_name, bench_fn base, double k)
+{
+    double lo, hi, r = 0, bm, m;
+    const char *un = k == 1 ? "  " : " ns ";
+    m = base_name ? measure_vs(f, base, &lo, &hi, &r, &bm) : measure(f, &lo, &hi);
+    m *= k; lo *= k; hi *= k;
+    if (k != 1 && m >= 1000) { m *= 1e-3; lo *= 1e-3; hi *= 1e-3; un = " us "; }
+    printf("%-34s %8.2f%s[%6.2f..%6.2f]", name, m, un, lo, hi);
+    if (base_name) printf("  %6.2fx %s", r, base_name);
+    printf("\n");
+}
 static void row(const char *name, bench_fn f, const char *base_name, bench_fn base)
 {
-    double lo, hi, r, bm, m;
-    if (base_name) {
-        m = measure_vs(f, base, &lo, &hi, &r, &bm);
-        printf("%-34s %8.2f  [%6.2f..%6.2f]  %6.2fx %s\n", name, m, lo, hi, r, base_name);
-    } else {
-        m = measure(f, &lo, &hi);
-        printf("%-34s %8.2f  [%6.2f..%6.2f]\n", name, m, lo, hi);
-    }
+    row_k(name, f, base_name, base, 1);
 }
 
 static void machine(void)
@@ -652,18 +659,10 @@ static double m_water(void)
     for (i = 0; i < mie_calls; ++i) s_ += mist_mie_water(200 + 1000 * xd[i], NULL).re;
     return s_;
 }
-/* a row of mie_calls calls a bench function: per call, in us where >= 1 us */
+/* a row of mie_calls calls a bench function: per call (row_k) */
 static void mie_row(const char *name, bench_fn f, const char *base_name, bench_fn base)
 {
-    double lo, hi, r = 0, bm, m, k = (double)N / mie_calls;
-    const char *un = "ns";
-    m = base_name ? measure_vs(f, base, &lo, &hi, &r, &bm) : measure(f, &lo, &hi);
-    m *= k; lo *= k; hi *= k;
-    if (m >= 1000) { m *= 1e-3; lo *= 1e-3; hi *= 1e-3; un = "us"; }
-    if (base_name)
-        printf("%-34s %8.2f %s [%.2f..%.2f]  %6.2fx %s\n", name, m, un, lo, hi, r, base_name);
-    else
-        printf("%-34s %8.2f %s [%.2f..%.2f]\n", name, m, un, lo, hi);
+    row_k(name, f, base_name, base, (double)N / mie_calls);
 }
 static void mie_rows(void)
 {

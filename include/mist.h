@@ -1093,6 +1093,13 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* alone, within the bar but not monotone in adjacent xi).                  */
 /* ======================================================================== */
 
+/* One Halley step's correction, 2 f f' / (2 f'^2 - f f''): the Rayleigh
+ * cubic's solvers below (for v and, near u = 0, for u) */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__halley)(MIST__T f, MIST__T fp, MIST__T fpp)
+{
+    return MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - f * fpp);
+}
+
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2].  fl (the float
  * samplers, in double): one Halley step from a degree-8 start (Chebyshev
  * fit of v/x, 2.2e-6 relative) instead of two from the cubic's 1.9e-3, and
@@ -1123,12 +1130,12 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_v)(MIST__T x, int fl)
     else
         v = x * (MIST__C(1.3356861810153138) + x * (MIST__C(0.7568693129572861)
                  + x * (MIST__C(1.841644170954037) + x * MIST__C(-1.3681288965997234))));
-    for (k = 0; k < 2 - fl; ++k) {       /* Halley: v -= 2 f f' / (2 f'^2 - f f'') */
+    for (k = 0; k < 2 - fl; ++k) {
         f  = fl ? (v - MIST__C(1)) * (v * (v - MIST__C(2)) + MIST__C(4))
                   - MIST__C(8) * (x - MIST__C(0.5))
                 : v * (v * (v - MIST__C(3)) + MIST__C(6)) - MIST__C(8) * x;
         fp = v * (MIST__C(3) * v - MIST__C(6)) + MIST__C(6);
-        v -= MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - f * (MIST__C(6) * v - MIST__C(6)));
+        v -= MIST__FN(mist__halley)(f, fp, MIST__C(6) * v - MIST__C(6));
     }
     return v;
 }
@@ -1150,10 +1157,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_u)(MIST__T xi, int fl)
         int k;
         u = q * (MIST__C(1) / MIST__C(3) + q2 * (MIST__C(-1) / MIST__C(81)
                                                  + q2 * (MIST__C(1) / MIST__C(729))));
-        for (k = 0; k < 2; ++k) {           /* Halley: u -= 2 f f' / (2 f'^2 - f f'') */
+        for (k = 0; k < 2; ++k) {
             f = u * (u * u + MIST__C(3)) - q;
             fp = MIST__C(3) * (u * u + MIST__C(1));
-            u -= MIST__C(2) * f * fp / (MIST__C(2) * fp * fp - f * (MIST__C(6) * u));
+            u -= MIST__FN(mist__halley)(f, fp, MIST__C(6) * u);
         }
         return s * u;
     }
@@ -2316,10 +2323,12 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         p.ge = p.g;
         p.a1 = p.w * nd * c0 + (p.w >= MIST__C(1) ? MIST__C(0) : (MIST__C(1) - p.w) * nh);
         p.b1 = p.w * nd * c1; p.a2 = MIST__C(0);
-    } else {                                /* two lobes: w applied after the */
-        p.kind = 2;                         /* division (w nd c0 underflowed  */
-        p.ge = p.g; p.a1 = nd * c0; p.b1 = nd * c1;   /* for tiny w and 1 - g^2, */
-        p.a2 = (MIST__C(1) - p.w) * nh;     /* a normal density lost) */
+    } else {                                /* two lobes; w applies after the
+                                               division (mist_phase_eval: w nd c0
+                                               underflowed for tiny w, 1 - g^2) */
+        p.kind = 2;
+        p.ge = p.g; p.a1 = nd * c0; p.b1 = nd * c1;
+        p.a2 = (MIST__C(1) - p.w) * nh;
     }
 #ifdef MIST__W
     MIST__WFN(mist__draine_c)((MIST__W)p.alpha, &c0w, &c1w);
@@ -3739,8 +3748,8 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
 
 /* Several exponential layers along one ray: see the section comment.
  * Domain: n >= 1 layers (layers NULL or n < 1: transmittance 1, in-scatter
- * and bound 0), each as mist_hfog_eval's fog.  Layer k contributes its own coefficients, scale height and Mie phase
- * function; the lights (sun, ambient, sun_extinction) are those of
+ * and bound 0), each as mist_hfog_eval's fog.  Layer k contributes its own
+ * coefficients, scale height and Mie phase function; the lights (sun, ambient, sun_extinction) are those of
  * layers[0].  At most MIST_HFOG_MAX_LAYERS layers are used.  `pieces` is
  * the number of pieces the ray is cut into for the in-scatter (<= 0: 8; at
  * most 64).  The transmittance is exact (closed form); the in-scatter is

@@ -145,10 +145,10 @@
 #  define MIST_MIE_FUNC static inline
 /* The complex helpers of the series, forced inline: in a large translation
  * unit gcc stops inlining them (its unit-growth limits) and each becomes a
- * call: mist_mie_sphere_make then took 2-2.4x as long in bench/mist_bench.c
- * as in a small program (x = 1 to 1000, measured).  Not for the public
- * mist_mie_cplx under gcc's fast-math guard (forced into a fast-math
- * caller it would not inline: see MIST__API_HOT in mist.h). */
+ * call: mist_mie_sphere_make then took 1.9-2.3x as long in the benchmark
+ * (x = 1 to 1000; docs/history.md).  Not for the public mist_mie_cplx
+ * under gcc's fast-math guard (forced into a fast-math caller it would not
+ * inline: see MIST__API_HOT in mist.h). */
 #  if defined(__GNUC__) && !defined(__CUDACC__)
 #    define MIST_MIE__HOT __attribute__((always_inline))
 #    if !(defined(MIST__FP_GUARD) && MIST__FP_GUARD == 2)
@@ -451,7 +451,8 @@ MIST_MIE_FUNC int mist_mie__valid(double x, mist_mie_complex m, int *pec)
     return 1;
 }
 
-MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__store(double *c, int n, mist_mie_complex a, mist_mie_complex b)
+MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__store(double *c, int n, mist_mie_complex a,
+                                                 mist_mie_complex b)
 {
     double fn = n, cn = (2 * fn + 1) / (fn * (fn + 1));
     c[0] = cn * a.re; c[1] = cn * a.im;

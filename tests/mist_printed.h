@@ -102,6 +102,14 @@ static inline void bhmie_cdiv(double ar, double ai, double br, double bi, double
     *r = (ar * br + ai * bi) / q;
     *i = (ai * br - ar * bi) / q;
 }
+/* a_n or b_n: (t psi - psi_{n-1}) / (t xi - xi_{n-1}), xi = psi - i chi,
+ * for t = tr + i ti (D_n/m + n/x for a_n, m D_n + n/x for b_n) */
+static inline void bhmie_coef(double tr, double ti, double psi, double chi, double psi1,
+                              double chi1, double *r, double *i)
+{
+    bhmie_cdiv(tr * psi - psi1, ti * psi, tr * psi + ti * chi - psi1,
+               ti * psi - tr * chi + chi1, r, i);
+}
 static inline int bhmie_printed(double x, double mr, double mi, double *d, double *ab,
                                 double *qsum)
 {
@@ -116,16 +124,12 @@ static inline int bhmie_printed(double x, double mr, double mi, double *d, doubl
     }
     for (n = 1; n <= nstop; ++n) {
         double psi = (2 * n - 1) * psi1 / x - psi0, chi = (2 * n - 1) * chi1 / x - chi0;
-        double dr, di, tr, ti, ar, ai, br, bi;
-        bhmie_cdiv(d[2 * n], d[2 * n + 1], mr, mi, &dr, &di);          /* D_n / m + n/x */
-        tr = dr + n / x; ti = di;
-        bhmie_cdiv(tr * psi - psi1, ti * psi, tr * psi + ti * chi - psi1,
-                   ti * psi - tr * chi + chi1, &ar, &ai);
-        dr = mr * d[2 * n] - mi * d[2 * n + 1];                          /* m D_n + n/x */
+        double dr, di, ar, ai, br, bi;
+        bhmie_cdiv(d[2 * n], d[2 * n + 1], mr, mi, &dr, &di);          /* D_n / m */
+        bhmie_coef(dr + n / x, di, psi, chi, psi1, chi1, &ar, &ai);
+        dr = mr * d[2 * n] - mi * d[2 * n + 1];                          /* m D_n */
         di = mr * d[2 * n + 1] + mi * d[2 * n];
-        tr = dr + n / x; ti = di;
-        bhmie_cdiv(tr * psi - psi1, ti * psi, tr * psi + ti * chi - psi1,
-                   ti * psi - tr * chi + chi1, &br, &bi);
+        bhmie_coef(dr + n / x, di, psi, chi, psi1, chi1, &br, &bi);
         ab[2 * n - 2] = ar; ab[2 * n - 1] = ai;
         ab[2 * nstop + 2 * n - 2] = br; ab[2 * nstop + 2 * n - 1] = bi;
         q += (2 * n + 1) * (ar * ar + ai * ai + br * br + bi * bi);
