@@ -136,7 +136,7 @@ static double b_hg_sample(void)        LOOP(double, mist_hg_sample(0.8, xd[i]))
 /* the same formulas in float arithmetic only (internal; up to 1.1x the
  * accuracy bar, which is why the public float functions use double inside) */
 static double b_hg_sample_floatonly(void) LOOP(float, mist__hg_samplef(0.8f, xf[i]))
-static double b_rayleigh_floatonly(void) LOOP(float, mist__rayleigh_uf(xf[i], 0))
+static double b_rayleigh_floatonly(void) LOOP(float, mist__rayleigh_uf(xf[i]))
 static double b_draine_evalf(void)     LOOP(float, mist_draine_evalf(0.5f, 17.f, uf[i]))
 static double b_draine_eval(void)      LOOP(double, mist_draine_eval(0.5, 17., ud[i]))
 static double b_eq6f(void)             LOOP(float, draine_eq6f(0.5f, 17.f, xf[i]))

@@ -50,7 +50,8 @@ int main(void)
     printf("double HG, Rayleigh and Draine samplers: double-double, Dekker's product "
            "(no FP_FAST_FMA, no wider long double)\n");
 #else
-    printf("double HG, Rayleigh and Draine samplers: long double (no FP_FAST_FMA)\n");
+    printf("double HG and Rayleigh samplers: double-double, Dekker's product (no "
+           "FP_FAST_FMA); Draine: long double\n");
 #endif
     for (kind = 0; kind < 3; ++kind)
         for (k = 0; k < n[kind]; ++k) {
