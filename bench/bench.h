@@ -29,5 +29,6 @@ double nold_hg_sample(double g, const double *x, double *out, int n);
 double nold_hg_sample_n(double g, const double *x, double *out, int n);
 double nold_draine_sample(double g, double a, const double *x, double *out, int n);
 double nold_rayleigh_sample(const double *x, double *out, int n);
+double nold_rayleigh_sample_n(const double *x, double *out, int n);
 
 #endif

@@ -1,7 +1,8 @@
 /* nold.c - the double samplers as built without a wider long double
  * (MIST_NO_LONG_DOUBLE) and, on x86 with gcc or clang, without fma
  * (-mno-fma -mno-avx512f, CMakeLists.txt): what MSVC x64 gets, double-double
- * by Dekker's product (see "Henyey-Greenstein: exact sampling" in mist.h),
+ * by Dekker's product (see "Henyey-Greenstein: exact sampling" in mist.h;
+ * for HG and Rayleigh also what every build without fma gets),
  * timed by bench/mist_bench.c in loops of the same shape as its own
  * (bench/bench.h).  (Until the fifth session of 2026-11-27 this file was
  * built with -mno-fma alone, which leaves AVX-512's fma and FP_FAST_FMA:
@@ -23,5 +24,11 @@ double nold_rayleigh_sample(const double *x, double *out, int n)
 double nold_hg_sample_n(double g, const double *x, double *out, int n)
 {
     mist_hg_sample_n(g, x, out, (size_t)n);
+    return out[n / 2];
+}
+
+double nold_rayleigh_sample_n(const double *x, double *out, int n)
+{
+    mist_rayleigh_sample_n(x, out, (size_t)n);
     return out[n / 2];
 }

@@ -959,8 +959,11 @@ int main(int argc, char **argv)
                "| g=0.5 | g=0.9 | outside [-1, 1] or NaN | ns/sample median [min..max] |\n"
                "|---|---|---|---|---|---|---|---|---|\n");
         for (c = 0; c < NI; ++c) {
-            printf("| %s | %.2g | (%g, %g, %.9g) |", iname[c], worst[c], at[c][0], at[c][1],
-                   at[c][2]);
+            if (worst[c] > 0)
+                printf("| %s | %.2g | (%g, %g, %.9g) |", iname[c], worst[c], at[c][0],
+                       at[c][1], at[c][2]);
+            else
+                printf("| %s | 0 | - |", iname[c]);   /* every sample the rounded root */
             for (gi = 0; gi < 4; ++gi) printf(" %.2g |", wg[c][gi]);
             printf(" %ld of %d | %.2f [%.2f..%.2f] |\n", bad[c], 12 * NX, med[c], lo[c],
                    hi[c]);
@@ -1003,7 +1006,10 @@ int main(int argc, char **argv)
         printf("| implementation | max abs(u - u*) | at (g, xi) | g=1e-4 | g=0.01 | g=0.5 "
                "| g=0.9 | ns/sample median [min..max] |\n|---|---|---|---|---|---|---|---|\n");
         for (c = 0; c < NH; ++c) {
-            printf("| %s | %.2g | (%g, %.9g) |", hname[c], hworst[c], hat[c][0], hat[c][1]);
+            if (hworst[c] > 0)
+                printf("| %s | %.2g | (%g, %.9g) |", hname[c], hworst[c], hat[c][0], hat[c][1]);
+            else
+                printf("| %s | 0 | - |", hname[c]);
             for (gi = 0; gi < 4; ++gi) printf(" %.2g |", hwg[c][gi]);
             printf(" %.2f [%.2f..%.2f] |\n", hmed[c], hlo[c], hhi[c]);
         }
@@ -1063,11 +1069,22 @@ int main(int argc, char **argv)
                 P[c].color = cl[c]; P[c].shape = sh[c];
                 P[c].invalid = 0; P[c].series = 0; P[c].size = 7; P[c].hollow = 0;
             }
+            static char lbz[NI + NH][96];   /* an error of 0 is drawn at 1e-17, and says so */
+            for (c = 0; c < NI; ++c)
+                if (!(worst[c] > 0)) {
+                    sprintf(lbz[c], "%s (error 0: drawn at 1e-17)", sname[c]);
+                    P[c].label = lbz[c];
+                }
             for (c = 0; c < NH; ++c) {          /* HG: hollow, colours as their Draine kin */
                 pt *q = &P[NI + c];
                 q->x = hmed[c]; q->xlo = hlo[c]; q->xhi = hhi[c];
                 q->y = hworst[c] > 0 ? hworst[c] : 1e-17; q->ylo = q->yhi = 0;
-                q->label = hsname[c]; q->color = cl[c]; q->shape = sh[c];
+                q->label = hsname[c];
+                if (!(hworst[c] > 0)) {
+                    sprintf(lbz[NI + c], "%s (error 0: drawn at 1e-17)", hsname[c]);
+                    q->label = lbz[NI + c];
+                }
+                q->color = cl[c]; q->shape = sh[c];
                 q->invalid = 0; q->series = 0; q->size = 7; q->hollow = 1;
             }
             H[0].y = 0x1p-24; H[0].label = "float: 1 ulp just below 1";

@@ -43,13 +43,17 @@
  *   so).  The double HG and Rayleigh samplers compute in double-double,
  *   its products by fma where it is one instruction (FP_FAST_FMA: ARM64,
  *   x86 with -march=haswell or later, CUDA device code), else by Dekker's
- *   splitting (mist__two_prod_b): correctly rounded in practice, monotone,
- *   the same samples in every build.  The double Draine and Cornette-Shanks
- *   samplers finish in double-double where fma is one instruction or long
- *   double is no wider (MSVC x64, MIST_NO_LONG_DOUBLE), else in long double
- *   (x86 with gcc or clang, the default build): the same bar, monotone
- *   (test_accuracy; test_accuracy_nold without long double and fma,
- *   test_accuracy_nold_native with fma).  Float is the same everywhere.  Run
+ *   splitting (mist__two_prod_b): correctly rounded in practice (but HG
+ *   within ~2^-40 of u = 0, where its error is absolute, ~2^-104),
+ *   monotone, the same samples in every build that rounds each operation
+ *   (one that contracts a*b + c into fma, as gcc -march=native without
+ *   -std=c99 does, may change HG's last bits there).  The double Draine and
+ *   Cornette-Shanks samplers finish in double-double where fma is one
+ *   instruction or long double is no wider (MSVC x64, MIST_NO_LONG_DOUBLE),
+ *   else in long double (x86 with gcc or clang, the default build): the
+ *   same bar, monotone (test_accuracy; test_accuracy_nold without long
+ *   double and fma, test_accuracy_nold_native with fma).  Float is the same
+ *   everywhere.  Run
  *   in CUDA device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90;
  *   tests/gpu/; the seventh session of 2026-11-27): every sampler within
  *   that bar (worst 0.249 of it; double Draine at ~2x double's cost), float
@@ -871,19 +875,28 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* in DOUBLE-DOUBLE: every term an unevaluated sum hi + lo (products by fma */
 /* where it is one instruction, else Dekker's product, mist__two_prod_b;   */
 /* sums by Knuth's two-sum; 1 - xi exact as such a pair), one division and  */
-/* its remainder (mist__hg_dd).  About 2^-100 of error: correctly rounded   */
-/* in practice (bench/mist_ddcheck.c: 1e5 random (g, xi), g down to 1e-300  */
-/* and up to 1 - 2^-53, xi down to 2^-1074, against float128: within 0.243x */
-/* the bar, 99961 the rounded root; with Dekker's product 0.25x, 99959),    */
-/* monotone (0 reversed pairs), branch-free (the batch form vectorises      */
-/* where fma is one instruction); 2.95x eq. 3 with fma (./build/mist_bench).*/
-/* Every build computes the same samples.  (Until the ninth session of      */
-/* 2026-11-27 a build with a wider long double and no fma, the default x86  */
-/* one, ran the three forms in long double: ~0.1% of samples an ulp off,    */
-/* near u = 0 an absolute error up to 2^-63; no faster than double-double   */
-/* by Dekker's product once that dropped its overflow branches for these   */
-/* bounded terms: 13.3-16.2 against 14.9-15.7 ns, g .8 to .05, gcc 12 -O2, */
-/* measured side by side.)                                                  */
+/* its remainder (mist__hg_dd).  About 2^-104 of error, relative to the    */
+/* terms (~1): correctly rounded in practice but near u = 0, where 1 - q    */
+/* keeps it as an absolute error (test_accuracy holds it to half an ulp +   */
+/* 2^-100; an independent check with exact rational references, ninth      */
+/* session of 2026-11-27: not the rounded root only where |u| < ~2^-40, up  */
+/* to ~100 ulps at |u| ~ 2^-59; such u are ~1e-12 of samples), and at       */
+/* |g| < ~2^-105 where u's leading term, 2 xi - 1 or 3g/2, is exactly a     */
+/* rounding tie that the term of relative size g, below double-double's     */
+/* reach, would break (1 ulp).  bench/mist_ddcheck.c: 1e5 random (g, xi), g */
+/* from 1e-300 to 1 - 2^-53, xi down to 2^-1074, against float128: within   */
+/* 0.243x the bar, 99961 the rounded root (with Dekker's product 0.25x,     */
+/* 99959: of the other 41, 30 the float128 reference's error and 11 such   */
+/* ties, by mpmath at 4000 bits).  Monotone (0 reversed pairs), branch-free */
+/* (the batch form vectorises where fma is one instruction); 2.95x eq. 3    */
+/* with fma (./build/mist_bench).  Every build that rounds each operation   */
+/* computes the same samples.  (Until the ninth session of 2026-11-27 a     */
+/* build with a wider long double and no fma, the default x86 one, ran the  */
+/* three forms in long double: ~0.1% of samples an ulp off, near u = 0 an   */
+/* absolute error up to 2^-63; no faster than double-double by Dekker's     */
+/* product once that dropped its overflow branches for these bounded terms: */
+/* 14.5-14.9 against 13.2-15.9 ns, g .8 to .05, gcc 12 -O2, measured side   */
+/* by side; docs/history.md.)                                               */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -1040,12 +1053,13 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* it is one instruction, else Dekker's), u = v - 1 summed exactly          */
 /* (mist__rayleigh_udd; bench/mist_ddcheck.c: 19998 of 2e4 random xi, down  */
 /* to 2^-1074, the rounded float128 root, 0 reversed; the batch form        */
-/* vectorises where fma is one instruction).  Every build computes the same */
-/* samples.  (Until the ninth session of 2026-11-27 a build with a wider    */
-/* long double and no fma, the default x86 one, solved in long double, two  */
-/* Halley steps from a cubic start: ~0.03% of samples an ulp off, measured  */
-/* over 2e6 random xi, and slower than double-double by Dekker's product    */
-/* without its overflow branches: 17.3-18.8 against 16.6-17.4 ns.)         */
+/* vectorises where fma is one instruction).  Every build that rounds each */
+/* operation computes the same samples.  (Until the ninth session of        */
+/* 2026-11-27 a build with a wider long double and no fma, the default x86  */
+/* one, solved in long double, two Halley steps from a cubic start: ~0.03%  */
+/* of samples an ulp off, measured over 2e6 random xi, and slower than      */
+/* double-double by Dekker's product without its overflow branches:         */
+/* 17.3-17.9 against 16.0-16.5 ns.)                                         */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2]: one Halley step from

@@ -222,7 +222,7 @@ static void test_monotone(void)
 }
 
 /* The float HG and Rayleigh samplers compute one form in double and round
- * it (mist__hg_one, mist__rayleigh_root): their double error (~1e-16 of
+ * it (mist__hg_one, mist__rayleigh_u): their double error (~1e-16 of
  * 1 + u near u = -1, of 1 - u near u = +1) must not reorder adjacent xi
  * where u crosses a float rounding midpoint.  Near the ends u moves by
  * less than a float ulp over very many xi, so runs of adjacent floats
