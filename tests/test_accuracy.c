@@ -417,6 +417,59 @@ static void test_rayleigh_rounding(void)
              "not; u(1/2) = %a", bad, n, badz, nz, mist_rayleigh_sample(0.5));
 }
 
+/* The double HG and Rayleigh samplers compute in double-double in every
+ * build, each operation rounded to double (C99: no contraction of a*b + c),
+ * their products exact either way (fma or Dekker's): so every build gives
+ * the same bits.  Their fingerprint, FNV-1a over the bits of 2e5 HG and 2e5
+ * Rayleigh samples (g tiny, near +-1 and in between, either sign; xi
+ * uniform, crowded to 0 and 1, near the HG median F(0) and 1/2, and the
+ * ends), printed alone with MIST_FINGERPRINT=1, is compared across
+ * test_accuracy, test_accuracy_nold (Dekker's product, no long double) and
+ * test_accuracy_nold_native (fma) by tests/same_samples.sh (ctest
+ * same_samples).  MIST_FINGERPRINT=2 flips the last sample's lowest bit:
+ * the script's control, which must differ.  (Until the ninth session of
+ * 2026-11-27 test_accuracy's build ran these samplers in long double: its
+ * fingerprint differed.) */
+static unsigned long long fingerprint(int flip)
+{
+    mt_rng r = { 0x4650 };
+    unsigned long long h = 1469598103934665603ull, b;
+    int k, n = 200000;
+    for (k = 0; k < n; ++k) {
+        double g = mt_uniform(&r), xi = mt_uniform(&r), s, u[2];
+        int j;
+        g = k % 4 == 0 ? pow(10, -300 * g) : (k % 4 == 1 ? 1 - ldexp(1, -(int)(53 * g)) : g);
+        if (mt_uniform(&r) < 0.5) g = -g;
+        if (k % 6 == 1) xi = pow(xi, 40);
+        else if (k % 6 == 2) xi = 1 - pow(xi, 8);
+        else if (k % 6 == 3) {                        /* near F(0): u ~ 0 */
+            double a = fabs(g);
+            s = sqrt(1 + a * a);
+            xi = (1 - a) / (s * (1 + a + s));
+            xi = (g < 0 ? 1 - xi : xi) + (mt_uniform(&r) - 0.5) * ldexp(1, -(int)(60 * mt_uniform(&r)));
+        } else if (k % 6 == 4)
+            xi = 0.5 + (mt_uniform(&r) - 0.5) * ldexp(1, -(int)(50 * mt_uniform(&r)));
+        if (k == 5) xi = 0;
+        if (k == 11) xi = 1;
+        u[0] = mist_hg_sample(g, xi);
+        u[1] = mist_rayleigh_sample(xi);
+        if (flip && k == n - 1) {
+            memcpy(&b, &u[1], sizeof b);
+            b ^= 1;
+            memcpy(&u[1], &b, sizeof b);
+        }
+        for (j = 0; j < 2; ++j) {
+            int i;
+            memcpy(&b, &u[j], sizeof b);
+            for (i = 0; i < 8; ++i) {
+                h ^= (b >> (8 * i)) & 0xff;
+                h *= 1099511628211ull;
+            }
+        }
+    }
+    return h;
+}
+
 /* Issue 2: alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
  * c0 = 1/alpha -> 0: near u = 0 the CDF has an (almost) triple point, and
  * a solver that judged convergence by the density at its iterate stopped
@@ -727,6 +780,19 @@ static void test_issue2_points(void)
 int main(void)
 {
     int kind;
+    const char *fp = getenv("MIST_FINGERPRINT");
+    if (fp && (fp[0] == '1' || fp[0] == '2')) {
+#ifdef __FAST_MATH__
+        /* fast-math: the inputs' own arithmetic here contracts and
+         * reassociates differently with and without fma, and subnormals
+         * flush (FTZ/DAZ): no common bits to compare; skipped */
+        (void)fingerprint;
+        printf("fast-math\n");
+#else
+        printf("%016llx\n", fingerprint(fp[0] == '2'));
+#endif
+        return 0;
+    }
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(150, 10) : mt_scale(400, 20)));
     test_issue2_points();
