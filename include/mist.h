@@ -1053,7 +1053,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__clamp11)(MIST__T u)
 /* it is one instruction, else Dekker's), u = v - 1 summed exactly          */
 /* (mist__rayleigh_udd; bench/mist_ddcheck.c: 19998 of 2e4 random xi, down  */
 /* to 2^-1074, the rounded float128 root, 0 reversed; the batch form        */
-/* vectorises where fma is one instruction).  Every build that rounds each */
+/* vectorises, with fma or Dekker's product).  Every build that rounds each */
 /* operation computes the same samples.  (Until the ninth session of        */
 /* 2026-11-27 a build with a wider long double and no fma, the default x86  */
 /* one, solved in long double, two Halley steps from a cubic start: ~0.03%  */
