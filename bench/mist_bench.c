@@ -11,7 +11,7 @@
  *     (bench/size_one.c) against one using everything (bench/size_all.c),
  *     built by CMake at this benchmark's flags (MIST_BENCH_FLAGS, printed);
  *   - the double samplers as built without a wider long double
- *     (bench/nold.c, MIST_NO_LONG_DOUBLE: MSVC, ARM Macs, CUDA);
+ *     and without fma (bench/nold.c, MIST_NO_LONG_DOUBLE -mno-fma: MSVC x64);
  *   - every other public evaluation and sampling function (coverage_rows:
  *     the direction samplers, the height fog, the ray-march step, the
  *     preparation of a medium), beside the formula as printed or the
@@ -557,7 +557,7 @@ static void batch_rows(void)
     row_speedup("mist_hg_eval_nf", n_hg_evalf, b_hg_evalf);
     row_speedup("mist_hg_eval_n", n_hg_eval, b_hg_eval);
     row_speedup("mist_hg_sample_nf", n_hg_samplef, b_hg_samplef);
-#if defined(FP_FAST_FMA)
+#if defined(FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)   /* as mist.h */
     row_speedup("mist_hg_sample_n (double-double)", n_hg_sample, b_hg_sample);
 #else
     row_speedup("mist_hg_sample_n (Dekker's product, a loop)", n_hg_sample, b_hg_sample);
@@ -574,7 +574,7 @@ static void batch_rows(void)
     row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
     row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
                 b_phase_draine_samplef);
-#if defined(FP_FAST_FMA)
+#if defined(FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)   /* as mist.h */
     row_speedup("mist_phase_sample_n  (Draine, double-double)", n_phase_dr_sample,
                 b_phase_draine_sample);
 #else
@@ -583,7 +583,7 @@ static void batch_rows(void)
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf", n_rayleigh_samplef, b_rayleigh_samplef);
-#if defined(FP_FAST_FMA)
+#if defined(FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)   /* as mist.h */
     row_speedup("mist_rayleigh_sample_n (double-double)", n_rayleigh_sample, b_rayleigh_sample);
 #else
     row_speedup("mist_rayleigh_sample_n (Dekker's product)", n_rayleigh_sample, b_rayleigh_sample);

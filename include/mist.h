@@ -87,8 +87,9 @@
  *   MIST_NO_LONG_DOUBLE  build the double Draine samplers as where long
  *                 double is no wider (MSVC, ARM Macs, CUDA device code):
  *                 double-double (see above; the tests build it).  The same
- *                 bar; without fma ~1.2x the time of long double (README
- *                 "Without a wider long double").
+ *                 bar; without fma about long double's time unprepared,
+ *                 ~1.4x prepared (docs/history.md, "Without a wider long
+ *                 double").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
  *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
@@ -681,8 +682,9 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 #    define MIST__DDR 1
 #  endif
 #endif
-/* ... whose batch forms vectorise where fma is one instruction; with
- * Dekker's product they loop over the scalar function */
+/* ... whose batch forms (HG's, the prepared Draine sampler's) vectorise
+ * where fma is one instruction; with Dekker's product they loop over the
+ * scalar function (Rayleigh's vectorises in every build) */
 #if defined(MIST__DD) && (defined(MIST__FAST_FMA) || defined(__CUDA_ARCH__))
 #  define MIST__DDV 1
 #endif
@@ -885,18 +887,18 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* rounding tie that the term of relative size g, below double-double's     */
 /* reach, would break (1 ulp).  bench/mist_ddcheck.c: 1e5 random (g, xi), g */
 /* from 1e-300 to 1 - 2^-53, xi down to 2^-1074, against float128: within   */
-/* 0.243x the bar, 99961 the rounded root (with Dekker's product 0.25x,     */
-/* 99959: of the other 41, 30 the float128 reference's error and 11 such   */
-/* ties, by mpmath at 4000 bits).  Monotone (0 reversed pairs), branch-free */
+/* 0.25x the bar, 99959 the rounded root, with fma or Dekker's product (of */
+/* the other 41, 30 the float128 reference's error and 11 such ties, by    */
+/* mpmath at 4000 bits).  Monotone (0 reversed pairs), branch-free          */
 /* (the batch form vectorises where fma is one instruction); 2.95x eq. 3    */
 /* with fma (./build/mist_bench).  Every build that rounds each operation   */
 /* computes the same samples.  (Until the ninth session of 2026-11-27 a     */
 /* build with a wider long double and no fma, the default x86 one, ran the  */
 /* three forms in long double: ~0.1% of samples an ulp off, near u = 0 an   */
-/* absolute error up to 2^-63; no faster than double-double by Dekker's     */
-/* product once that dropped its overflow branches for these bounded terms: */
-/* 14.5-14.9 against 13.2-15.9 ns, g .8 to .05, gcc 12 -O2, measured side   */
-/* by side; docs/history.md.)                                               */
+/* absolute error up to 2^-63; double-double by Dekker's product, once it   */
+/* dropped its overflow branches for these bounded terms, costs about the   */
+/* same: 14.5-14.9 ns against long double's 13.2-15.9, g .8 to .05, gcc 12  */
+/* -O2, measured side by side; docs/history.md.)                            */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -1096,7 +1098,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_u)(MIST__T xi)
 #if defined(MIST__DD)
 /* DOUBLE-DOUBLE (see the section comment): mist__rayleigh_u to ~2^-100.
  * The residual p(v) = ((v - 3) v + 6) v - 8x at the double root by
- * compensated Horner with fma (as if in twice the precision), one Newton
+ * compensated Horner, its products exact (fma or Dekker's: as if in twice
+ * the precision), one Newton
  * step as a correction -p/p', and u = v - 1 summed exactly before its one
  * rounding. */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_udd)(MIST__T xi)
@@ -1213,7 +1216,8 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
 /* the double sampler in double-double: sanitised |g| < 1, xi in [0, 1];
  * g < 0 by the mirror u(g, xi) = -u(-g, 1 - xi), 1 - xi as an exact pair,
  * by selects on factors z = 0 and one = 1 (the batch form reads them from
- * a volatile so that they stay selects and its loop vectorises) */
+ * a volatile so that they stay selects and its loop vectorises, where fma
+ * is one instruction) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_ddu)(MIST__T g, MIST__T xi, MIST__T z, MIST__T one)
 {
     MIST__T ga = g < z ? -g : g, neg = g < z ? one : z;
@@ -1324,10 +1328,13 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* (the residual as written) -> 89 (the step's divisions off its chain:     */
 /* 48 -> 39 ns of latency in a one-off harness).                            */
 /* Where there is neither (MSVC x64, or MIST_NO_LONG_DOUBLE without fma)    */
-/* the same double-double finish runs with Dekker's product (mist__two_prod,*/
-/* mist__fms): the full bar and monotone (test_accuracy_nold; mist_ddcheck  */
-/* built so: 0.25x, 19998 of 2e4 rounded), ~135 ns a sample (g .5, alpha    */
-/* 17), prepared ~126.  Until the fifth session of 2026-11-27 those builds  */
+/* the same double-double finish runs with Dekker's product (mist__two_prod_b*/
+/* after scaling the weights below 1, mist__fms): the full bar and monotone */
+/* (test_accuracy_nold; mist_ddcheck built so: 0.25x, 19998 of 2e4 rounded),*/
+/* 122-123 ns a sample (g .5, alpha 17; 142-147 with the overflow tests of  */
+/* mist__two_prod, until the ninth session of 2026-11-27), prepared 110-115 */
+/* (133-146 then); the default x86 build's long double: 125-128, prepared   */
+/* 80-99 (gcc 12 -O2, one-off harness).  Until the fifth session those      */
 /* skipped the wide steps (60 and 31 ns): documented within 2x the bar for  */
 /* alpha <= 1e4 and not monotone; an independent check found 2.3x and a     */
 /* targeted scan near u = 0 (xi near F(0)) 3.1x.                            */
@@ -1536,22 +1543,22 @@ MIST__F MIST__T MIST__FN(mist__draine_kb)(MIST__T g, MIST__T c0, MIST__T c1, MIS
 #endif /* !MIST_NO_DRAINE */
 
 #if defined(MIST__DDR) && !defined(MIST_NO_DRAINE)
-/* DOUBLE-DOUBLE FINISH (double where fma is one instruction; see "Draine
- * and Cornette-Shanks: exact sampling").  Compensated arithmetic: a value
- * is a pair h + l, l its error to first order (products' roundings by fma,
- * sums' by two-sum; the products of two errors, ~eps^2 of the value, are
+/* DOUBLE-DOUBLE FINISH (double where fma is one instruction or long double
+ * is no wider; see "Draine and Cornette-Shanks: exact sampling").
+ * Compensated arithmetic: a value is a pair h + l, l its error to first
+ * order (products' roundings by fma or Dekker's product, sums' by two-sum; the products of two errors, ~eps^2 of the value, are
  * dropped).  h + *l = (ah + al)(bh + bl): */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__cm)(MIST__T ah, MIST__T al, MIST__T bh, MIST__T bl,
                                              MIST__T *l)
 {
-    MIST__T e, p = MIST__FN(mist__two_prod)(ah, bh, &e);
+    MIST__T e, p = MIST__FN(mist__two_prod_b)(ah, bh, &e);
     *l = MIST__FN(mist__fma)(ah, bl, MIST__FN(mist__fma)(al, bh, e));
     return p;
 }
 /* h + *l = a (bh + bl), a exact */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__cs)(MIST__T a, MIST__T bh, MIST__T bl, MIST__T *l)
 {
-    MIST__T e, p = MIST__FN(mist__two_prod)(a, bh, &e);
+    MIST__T e, p = MIST__FN(mist__two_prod_b)(a, bh, &e);
     *l = MIST__FN(mist__fma)(a, bl, e);
     return p;
 }
@@ -1596,7 +1603,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
     uh *= sg; ul *= sg;                                               /* mirrored */
     v1h = MIST__FN(mist__fast_two_sum)(MIST__C(1), gg, &v1l);         /* 1 + gg */
     mh = MIST__FN(mist__fast_two_sum)(MIST__C(1), -gg, &ml);          /* 1 - gg */
-    g2h = MIST__FN(mist__two_prod)(g, g, &g2l);
+    g2h = MIST__FN(mist__two_prod_b)(g, g, &g2l);
     ah = MIST__FN(mist__fast_two_sum)(MIST__C(1), g2h, &al);          /* a = 1 + g^2 */
     al += g2l;
     nh = MIST__FN(mist__fast_two_sum)(MIST__C(1), MIST__C(2) * g2h, &nl);
@@ -1705,6 +1712,20 @@ MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST
 {
     MIST__T bl = MIST__C(-1), bh = MIST__C(1), r, s, uh, lo, hi;
     int it, c;
+#if !defined(MIST__FAST_FMA) && !defined(__CUDA_ARCH__)
+    {   /* Dekker's product (mist__two_prod_b) needs bounded factors: the
+         * weights scaled by a power of 2 to a larger one in [1/2, 1), which
+         * scales the residual and leaves the steps and their tests as they
+         * were, exactly (with alpha up to 1e270 unscaled, the products
+         * needed mist__two_prod's overflow tests: 142-147 against 122-125
+         * ns unprepared, 133-146 against 110-117 prepared, gcc 12 -O2,
+         * MIST_NO_LONG_DOUBLE; measured) */
+        int e;
+        MIST__M(frexp)(c0 > c1 ? c0 : c1, &e);
+        c0 = MIST__M(ldexp)(c0, -e);
+        c1 = MIST__M(ldexp)(c1, -e);
+    }
+#endif
     for (it = 0; it < MIST__MAXIT; ++it) {
         c = MIST__FN(mist__draine_dd1)(g, c0, c1, xi, u, out, &r, &s, &uh, &lo, &hi);
         if (c) return c > 0;
@@ -1809,8 +1830,9 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     }
     if (!good) st = MIST__FN(mist__hg_sample)(g, x);
 #if defined(MIST__DDR)
-    /* double where fma is one instruction: the compensated finish, with
-     * the weights (1, alpha), exact, while they cannot overflow */
+    /* double where fma is one instruction or long double is no wider: the
+     * compensated finish, with the weights (1, alpha), exact, while they
+     * cannot overflow */
     c0d = alpha <= MIST__C(1e270) ? MIST__C(1) : c0;
     c1d = alpha <= MIST__C(1e270) ? alpha : c1;
     if (good == 2 && MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, st, &u)) return u;
@@ -1873,8 +1895,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__
 /* The prepared sampler's first try at sanitised |g| < 1, alpha, c1 != 0, xi
  * in [0, 1]: *st, the start from tab (u at xi = j/K, then the slopes du/dxi
  * / K, then the step bounds): cubic Hermite; returns 1 with the sample in
- * *u where the compensated finish (double where fma is one instruction:
- * mist__draine_ddfin) or wide Newton steps with an a-priori stop
+ * *u where the compensated finish (double where fma is one instruction or
+ * long double is no wider: mist__draine_ddfin) or wide Newton steps with an a-priori stop
  * (mist__draine_step) finish it, else 0 (the caller goes on from *st:
  * mist__draine_finish). */
 MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const MIST__T *tab,
@@ -1885,8 +1907,9 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 #if defined(MIST__W) || defined(MIST__DDR)
     {   /* no branch on xi (see mist__draine_step); a second step only from
          * inside [u_j, u_j+1], kb's range.  Double: first one step in T (long
-         * double is slow), then where fma is one instruction the compensated
-         * finish (mist__draine_ddfin), else the wide steps. */
+         * double is slow), then where fma is one instruction or long double
+         * is no wider the compensated finish (mist__draine_ddfin), else the
+         * wide steps. */
         int ok;
         MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = *st;
         kb = tab[2 * MIST__PHASE_K + 2 + j];
@@ -2759,7 +2782,7 @@ MIST__F void MIST__FN(mist_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, siz
  * vectorised, the same root in double; double: vectorised, in double-double,
  * also by Dekker's product where fma is no instruction: 15.6 -> 9.5 ns an
  * element with SSE2, 5.8 with AVX, gcc 12 -O2/-O3, measured; the HG batch
- * so vectorised was slower than its loop, 12.2 against 14.1 ns). */
+ * so vectorised was slower than its loop, 14.1 against 12.2 ns). */
 MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, size_t n)
 {
 #if defined(MIST__W_EXACT)
