@@ -149,6 +149,9 @@ static double b_eq6f(void)             LOOP(float, draine_eq6f(0.5f, 17.f, xf[i]
 static double b_eq6(void)              LOOP(double, draine_eq6(0.5, 17., xd[i]))
 static double b_draine_samplef(void)   LOOP(float, mist_draine_samplef(0.5f, 17.f, xf[i]))
 static double b_draine_sample(void)    LOOP(double, mist_draine_sample(0.5, 17., xd[i]))
+/* g 0, alpha 1: outside eq. 6's domain, where the unprepared batch prepares */
+static double b_draine_samplef_g0(void) LOOP(float, mist_draine_samplef(0.f, 1.f, xf[i]))
+static double b_draine_sample_g0(void)  LOOP(double, mist_draine_sample(0., 1., xd[i]))
 static double b_eq6f_250(void)         LOOP(float, draine_eq6f(0.1f, 250.f, xf[i]))
 static double b_draine_samplef_250(void) LOOP(float, mist_draine_samplef(0.1f, 250.f, xf[i]))
 static double b_cs_samplef(void)       LOOP(float, mist_cs_samplef(0.7f, xf[i]))
@@ -479,15 +482,27 @@ static double n_draine_evalf(void) NCALL(float, mist_draine_eval_nf(0.5f, 17.f, 
 static double n_draine_eval(void)  NCALL(double, mist_draine_eval_n(0.5, 17., ud, out_double, N))
 static double n_draine_samplef(void) NCALL(float, mist_draine_sample_nf(0.5f, 17.f, xf, out_float, N))
 static double n_draine_sample(void)  NCALL(double, mist_draine_sample_n(0.5, 17., xd, out_double, N))
-/* the same in batches of MIST_DRAINE_PREPARE_N (1024), each prepared anew */
+/* the same in batches of M: 64 (in eq. 6's domain: the kernel, no
+ * preparation); and at g 0, alpha 1 (outside it), one array of N and
+ * batches of MIST_DRAINE_PREPARE_N (1024), each prepared anew */
 #define STR_(x) #x
 #define STR(x) STR_(x)
-#define NCHUNK(T, CALL) { int c; for (c = 0; c < N; c += MIST_DRAINE_PREPARE_N) { CALL; } \
-                          return (double)out_##T[N / 2]; }
+#define NCHUNK(T, M, CALL) { int c; for (c = 0; c < N; c += (M)) { CALL; } \
+                             return (double)out_##T[N / 2]; }
+static double n_draine_samplef_64(void)
+    NCHUNK(float, 64, mist_draine_sample_nf(0.5f, 17.f, xf + c, out_float + c, 64))
+static double n_draine_sample_64(void)
+    NCHUNK(double, 64, mist_draine_sample_n(0.5, 17., xd + c, out_double + c, 64))
+static double n_draine_samplef_g0(void)
+    NCALL(float, mist_draine_sample_nf(0.f, 1.f, xf, out_float, N))
+static double n_draine_sample_g0(void)
+    NCALL(double, mist_draine_sample_n(0., 1., xd, out_double, N))
 static double n_draine_samplef_chunk(void)
-    NCHUNK(float, mist_draine_sample_nf(0.5f, 17.f, xf + c, out_float + c, MIST_DRAINE_PREPARE_N))
+    NCHUNK(float, MIST_DRAINE_PREPARE_N, mist_draine_sample_nf(0.f, 1.f, xf + c, out_float + c,
+                                                               MIST_DRAINE_PREPARE_N))
 static double n_draine_sample_chunk(void)
-    NCHUNK(double, mist_draine_sample_n(0.5, 17., xd + c, out_double + c, MIST_DRAINE_PREPARE_N))
+    NCHUNK(double, MIST_DRAINE_PREPARE_N, mist_draine_sample_n(0., 1., xd + c, out_double + c,
+                                                               MIST_DRAINE_PREPARE_N))
 static double n_phase_dr_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_drf, xf, out_float, N))
 static double n_phase_dr_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_drf, uf, out_float, N))
 static double n_phase_dr_sample(void) NCALL(double, mist_phase_sample_n(&ph_dr, xd, out_double, N))
@@ -569,12 +584,24 @@ static void batch_rows(void)
     row_speedup("mist_hg_sample_n (no fma: Dekker's, a loop)", n_hg_sample_nold, b_hg_sample_nold);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
-    row_speedup("mist_draine_sample_nf (prepares once)", n_draine_samplef, b_draine_samplef);
-    row_speedup("mist_draine_sample_n  (prepares once)", n_draine_sample, b_draine_sample);
-    row_speedup("mist_draine_sample_nf (n = " STR(MIST_DRAINE_PREPARE_N) " each)",
-                n_draine_samplef_chunk, b_draine_samplef);
-    row_speedup("mist_draine_sample_n  (n = " STR(MIST_DRAINE_PREPARE_N) " each)",
-                n_draine_sample_chunk, b_draine_sample);
+    row_speedup(mist__draine_vnf(0.5f, 17.f) ? "mist_draine_sample_nf (.5, 17: eq. 6 kernel)"
+                : "mist_draine_sample_nf (.5, 17: prepares once)", n_draine_samplef,
+                b_draine_samplef);
+    row_speedup(mist__draine_vn(0.5, 17.) ? "mist_draine_sample_n  (.5, 17: eq. 6 kernel)"
+                : "mist_draine_sample_n  (.5, 17: prepares once)", n_draine_sample,
+                b_draine_sample);
+    row_speedup("mist_draine_sample_nf (.5, 17, n = 64 each)", n_draine_samplef_64,
+                b_draine_samplef);
+    row_speedup("mist_draine_sample_n  (.5, 17, n = 64 each)", n_draine_sample_64,
+                b_draine_sample);
+    row_speedup("mist_draine_sample_nf (0, 1: prepares once)", n_draine_samplef_g0,
+                b_draine_samplef_g0);
+    row_speedup("mist_draine_sample_n  (0, 1: prepares once)", n_draine_sample_g0,
+                b_draine_sample_g0);
+    row_speedup("mist_draine_sample_nf (0, 1, n = " STR(MIST_DRAINE_PREPARE_N) " each)",
+                n_draine_samplef_chunk, b_draine_samplef_g0);
+    row_speedup("mist_draine_sample_n  (0, 1, n = " STR(MIST_DRAINE_PREPARE_N) " each)",
+                n_draine_sample_chunk, b_draine_sample_g0);
     row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
     row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
                 b_phase_draine_samplef);

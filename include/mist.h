@@ -92,7 +92,8 @@
  *                 double").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
- *                 (see BATCH FORMS); 1: always, (size_t)-1: never.
+ *                 where their eq. 6 kernel does not apply (see BATCH
+ *                 FORMS); 1: always, (size_t)-1: never.
  *
  *   Leave out what a scene does not need (as stb's STBI_NO_*): each macro
  *   removes whole sections, so they are not even compiled, and the names
@@ -138,9 +139,15 @@
  *   float HG and Rayleigh samplers (one straight-line form in double) are
  *   vectorised, and so are the double ones (double-double): Rayleigh
  *   everywhere, HG where fma is one instruction (FP_FAST_FMA; else a plain
- *   loop, which was faster).  The unprepared Draine sampler is a loop below
- *   MIST_DRAINE_PREPARE_N (1024) elements; from there on it prepares the
- *   medium once and returns the prepared sampler's values (the one
+ *   loop, which was faster).  The unprepared Draine samplers, for media in
+ *   the domain of [JD23] eq. 6 (1e-3 <= |g| <= 0.9999, 1e-6 <= alpha <=
+ *   1e4) where sqrt vectorises (no errno), in float, and in double where
+ *   fma is one instruction, run the scalar sampler's first try over a
+ *   block (eq. 6 in double, then its certificate or one compensated Newton
+ *   step), at every n and without preparing; the few elements it leaves
+ *   take the scalar function.  Elsewhere they are a loop below
+ *   MIST_DRAINE_PREPARE_N (1024) elements; from there on they prepare the
+ *   medium once and return the prepared sampler's values (the one
  *   exception to "bit for bit": the same bar, monotone in xi, but the
  *   last bit may differ from mist_draine_sample's for ~1e-4 of xi in
  *   float, ~1e-3 in double).
@@ -505,16 +512,14 @@ typedef struct mist_hfogf {
  * to third order in e = 1 - m y^3 (error ~ (35/243) e^4, below double's
  * rounding; no division), then cbrt(s) = m y^2 2^(r/3) 2^k.  Zero,
  * subnormal, negative, inf and NaN go to libm; CUDA device code always. */
-MIST_FUNC double mist__cbrt(double s)
+MIST_FUNC MIST__HOT double mist__cbrt_m(double s)   /* s positive and normal */
 {
-#if !defined(__CUDA_ARCH__)
     uint64_t b;
     unsigned ex;
     int k, r;
     double m, m2, y, e, sc;
     memcpy(&b, &s, sizeof b);
-    ex = (unsigned)(b >> 52);                      /* the sign bit makes ex > 2046 */
-    if (ex - 1u >= 2046u) return cbrt(s);
+    ex = (unsigned)(b >> 52);
     k = ((int)ex - 1023 + 1023) / 3 - 341;         /* floor((ex - 1023) / 3) */
     r = (int)ex - 1023 - 3 * k;
     b = (b & (((uint64_t)1 << 52) - 1)) | ((uint64_t)1023 << 52);   /* (C++98: no ull) */
@@ -529,12 +534,25 @@ MIST_FUNC double mist__cbrt(double s)
     memcpy(&sc, &b, sizeof sc);
     return ((m * y) * y) * ((r == 0 ? 1.0 : r == 1 ? 1.259921049894873164767211
                                                    : 1.587401051968199474751706) * sc);
+}
+/* 1 where s is not positive and normal: zero, subnormal, negative, inf, NaN */
+MIST_FUNC MIST__HOT int mist__cbrt_odd(double s)
+{
+    uint64_t b;
+    memcpy(&b, &s, sizeof b);
+    return (unsigned)(b >> 52) - 1u >= 2046u;      /* the sign bit makes it > 2046 */
+}
+MIST_FUNC double mist__cbrt(double s)
+{
+#if !defined(__CUDA_ARCH__)
+    return mist__cbrt_odd(s) ? cbrt(s) : mist__cbrt_m(s);
 #else
     return cbrt(s);
 #endif
 }
 
-MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
+MIST_FUNC MIST__HOT double mist__draine_eq6x(double g, double alpha, double xi, int vec,
+                                             int *odd)
 {
     double g2 = g * g, g4 = g2 * g2;
     double t0 = alpha - alpha * g2;
@@ -545,12 +563,18 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
     double t5 = t0 * (t1 * t2 + t4 * t4) + t1 * t1 * t1;
     double t6 = t0 * 4 * (g4 - g2), i0 = 2 / t0;
     double s  = t5 + sqrt(t5 * t5 - t6 * t6 * t6);
-    double t7 = mist__cbrt(s), r6 = t6 / s;
+    double t7 = vec ? mist__cbrt_m(s) : mist__cbrt(s), r6 = t6 / s;
     double t8 = (t1 + r6 * t7 * t7 + t7) * i0;
     double y  = 6 * (1 + g2) + t8, q = 4 * t4 * i0 / y;
     double t9 = sqrt(y);
     double w = sqrt(6 * (1 + g2) - t8 + q * t9) - t9;
+    *odd = mist__cbrt_odd(s);
     return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
+}
+MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
+{
+    int odd;
+    return mist__draine_eq6x(g, alpha, xi, 0, &odd);
 }
 #endif /* !MIST_NO_DRAINE */
 
@@ -1793,6 +1817,15 @@ MIST__F MIST__T MIST__FN(mist__draine_round)(MIST__T g, MIST__W c0, MIST__W c1, 
 }
 #endif
 
+/* Where [JD23 eq. 6] in double is a good start (sanitised g, alpha): within
+ * 1.3e-5 of the root there (see mist__draine_solve). */
+MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
+{
+    MIST__T ag = MIST__FN(mist__abs)(g);
+    return ag >= MIST__C(1e-3) && ag <= MIST__C(0.9999) && alpha >= MIST__C(1e-6)
+           && alpha <= MIST__C(1e4);
+}
+
 /* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1); c0, c1:
  * the weights of alpha; f0: F_g(0) as hi + lo (a prepared phase function)
  * or NULL.  Newton in the wide type from [JD23 eq. 6] where it is good;
@@ -1822,8 +1855,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
      * double), breaking accuracy and monotonicity. */
     good = st > MIST__C(-1) && st < MIST__C(1) && g <= MIST__C(0.9999)
            && g >= MIST__C(-0.9999);
-    if (!good && (g >= MIST__C(1e-3) || g <= MIST__C(-1e-3)) && g <= MIST__C(0.9999)
-        && g >= MIST__C(-0.9999) && alpha >= MIST__C(1e-6) && alpha <= MIST__C(1e4)) {
+    if (!good && MIST__FN(mist__draine_ok6)(g, alpha)) {
         double ud = mist__draine_eq6((double)g, (double)alpha, (double)x);
         good = ud > -1 && ud < 1 ? 2 : 0;
         st = (MIST__T)ud;
@@ -1976,8 +2008,9 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     MIST__W r, sc, fs, hi, ho, h, v2, ag, ar;
     MIST__T uf = (MIST__T)ud, fi, fo;
     uint32_t b, bi, bo;
+    int in;
     memcpy(&b, &uf, sizeof b);
-    if ((b & 0x7fffffffu) - 1u >= 0x3f7fffffu) return 0;   /* 0, +-1, NaN, beyond */
+    in = (b & 0x7fffffffu) - 1u < 0x3f7fffffu;        /* not 0, +-1, NaN or beyond */
     bi = b - 1u; bo = b + 1u;                  /* the neighbours towards 0, away */
     memcpy(&fi, &bi, sizeof fi);
     memcpy(&fo, &bo, sizeof fo);
@@ -1989,7 +2022,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     ag = MIST__WFN(mist__abs)((MIST__W)g);
     ar = MIST__WFN(mist__abs)(r);
     return ((ar + mg * sc) * (v2 * v2) < k * h * fs * (v2 - 3 * ag * h))
-         & (aw <= 2097152);                                             /* 2^21 */
+         & (aw <= 2097152) & in;                          /* 2^21; no branch */
 }
 
 /* The unprepared float sampler's first try at sanitised |g| < 1, alpha, xi
@@ -2000,20 +2033,30 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
  * 1e-12 of u* almost everywhere there, so it fails mostly where u* lies
  * within that of a midpoint.  Against eq. 6 and the solver's Newton step
  * and rounding, this is eq. 6 and one residual's latency (measured in
- * "Draine and Cornette-Shanks: exact sampling"). */
+ * "Draine and Cornette-Shanks: exact sampling").  mist__draine_try6x: the
+ * try without its domain test (mist__draine_ok6), branch-free: the batch form runs it over a block (vec = 1: mist__cbrt_m, and
+ * 0 where eq. 6's cube root argument s is odd, which the scalar try gives
+ * to libm's cbrt; elsewhere the same arithmetic, so the same answers). */
+MIST__F MIST__HOT int MIST__FN(mist__draine_try6x)(MIST__T g, MIST__T alpha, MIST__T xi,
+                                                   int vec, MIST__T *st, MIST__T *u)
+{
+    /* the mirror by copysign and a min, not selects on xi > 1/2: gcc
+     * specialised the whole body for sg = +-1 and would not vectorise it */
+    MIST__W xw = (MIST__W)xi, sg = MIST__WFN(copysign)((MIST__W)1, (MIST__W)0.5 - xw), ud;
+    MIST__W x = xw < 1 - xw ? xw : 1 - xw;            /* exact: xi a float */
+    int odd;
+    ud = sg * (MIST__W)mist__draine_eq6x((double)sg * (double)g, (double)alpha, (double)x,
+                                         vec, &odd);
+    *st = (MIST__T)ud;
+    *u = *st;
+    return MIST__FN(mist__draine_cert)(g, alpha, xi, ud, (MIST__W)0.7) & !(vec & odd)
+           & (x > 0);
+}
 MIST__F MIST__HOT int MIST__FN(mist__draine_try6)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                   MIST__T *st, MIST__T *u)
 {
-    int m = xi > MIST__C(0.5);
-    MIST__T x = m ? MIST__C(1) - xi : xi, ag = MIST__FN(mist__abs)(g);
-    MIST__W sg = m ? -1 : 1, ud;
-    if (!(ag >= MIST__C(1e-3) && ag <= MIST__C(0.9999) && alpha >= MIST__C(1e-6)
-          && alpha <= MIST__C(1e4) && x > MIST__C(0)))
-        return 0;
-    ud = sg * (MIST__W)mist__draine_eq6((double)sg * (double)g, (double)alpha, (double)x);
-    *st = (MIST__T)ud;
-    *u = *st;
-    return MIST__FN(mist__draine_cert)(g, alpha, xi, ud, (MIST__W)0.7);
+    if (!MIST__FN(mist__draine_ok6)(g, alpha)) return 0;
+    return MIST__FN(mist__draine_try6x)(g, alpha, xi, 0, st, u);
 }
 #endif
 
@@ -2629,9 +2672,10 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* sanitised once.  The work goes in blocks of MIST__BLK into local arrays: */
 /* the block loop has a constant trip count, no aliasing (so in == out is   */
 /* allowed) and a branch-free body, which gcc's -O2 "very cheap" cost model */
-/* and clang vectorise.  The unprepared Draine sampler (iterations, below   */
-/* MIST_DRAINE_PREPARE_N), the double Draine samplers in long double and   */
-/* the double HG sampler without fma are plain loops over the scalar one.   */
+/* and clang vectorise.  The unprepared Draine sampler outside its eq. 6   */
+/* kernel (iterations, below MIST_DRAINE_PREPARE_N), the double Draine      */
+/* samplers in long double and the double HG sampler without fma are plain  */
+/* loops over the scalar one.                                               */
 /* Domain of each: the scalar function's, element by element; n = 0 does   */
 /* nothing (in, out may then be NULL); out == in is allowed, other overlaps */
 /* are not.                                                                 */
@@ -2747,19 +2791,81 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                                            MIST__T *out, size_t n);
 #endif
 
-/* Draine sample of each in[i] = xi.  Below MIST_DRAINE_PREPARE_N elements
- * a loop over mist_draine_sample; from there on the batch is one medium,
- * so it is prepared once (mist_phase_draine: the cost of ~150 samples) and
- * sampled by mist_phase_sample_n: the prepared sampler's values, which
- * meet the same bar and are monotone in xi but may differ from
- * mist_draine_sample's in the last bit (measured: 1.1e-4 of random xi in
- * float, 1.2e-3 in double; see "Prepared phase functions").  Without the
- * prepared functions (MIST_NO_FOG) and in CUDA device code (a 1.6-3.1 KB
- * table per thread): always the loop. */
+/* The unprepared Draine batch samplers' kernel, where square roots
+ * vectorise (no errno: -fno-math-errno, implied by -ffast-math) and on the
+ * host: in float, and in double where fma is one instruction.  It computes
+ * the scalar sampler's first try over a block: [JD23 eq. 6] in double and
+ * its certificate (float: mist__draine_try6x) or one compensated Newton
+ * step (double: mist__draine_dd1, the first step of mist__draine_ddfin,
+ * which mist__draine_solve takes from eq. 6's answer); the elements it does
+ * not settle (the certificate fails, or the step does not settle: 0-4%)
+ * take the scalar function.  So every value is mist_draine_sample's, bit
+ * for bit, at every n, with no preparation (this replaced preparing the
+ * medium from 1024 elements on within eq. 6's domain, which gave the
+ * prepared sampler's values; see "Batch forms" in README.md). */
+#if !defined(__CUDA_ARCH__) && defined(__NO_MATH_ERRNO__) \
+    && (defined(MIST__W_EXACT) || defined(MIST__DDV))
+#  define MIST__DRAINE_V 1
+#endif
+/* 1 where mist_draine_sample_n takes that kernel (eq. 6's domain, after
+ * sanitising) */
+MIST__F int MIST__FN(mist__draine_vn)(MIST__T g, MIST__T alpha)
+{
+#if defined(MIST__DRAINE_V)
+    return MIST__FN(mist__draine_ok6)(MIST__FN(mist__g)(g), alpha > MIST__C(0) ? alpha
+                                                                           : MIST__C(0));
+#else
+    (void)g; (void)alpha;
+    return 0;
+#endif
+}
+
+/* Draine sample of each in[i] = xi.  Where the kernel above applies, the
+ * scalar values at every n.  Elsewhere: below MIST_DRAINE_PREPARE_N
+ * elements a loop over mist_draine_sample; from there on the batch is one
+ * medium, so it is prepared once (mist_phase_draine: the cost of ~150
+ * samples) and sampled by mist_phase_sample_n: the prepared sampler's
+ * values, which meet the same bar and are monotone in xi but may differ
+ * from mist_draine_sample's in the last bit (measured: 1.1e-4 of random xi
+ * in float, 1.2e-3 in double; see "Prepared phase functions").  Without
+ * the prepared functions (MIST_NO_FOG) and in CUDA device code (a 1.6-3.1
+ * KB table per thread): always the loop. */
 MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST__T *in,
                                             MIST__T *out, size_t n)
 {
     size_t i;
+#if defined(MIST__DRAINE_V)
+    if (MIST__FN(mist__draine_vn)(g, alpha)) {
+        volatile MIST__T z0 = 0;
+        MIST__T z = z0, one = z + 1;
+        MIST__T gs = MIST__FN(mist__g)(g);       /* (alpha: in eq. 6's domain) */
+#if defined(MIST__W_EXACT)
+        MIST__BLOCKS_FB(
+            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+            MIST__T st; MIST__T u;
+            f_[j_] = (unsigned char)!MIST__FN(mist__draine_try6x)(gs, alpha, xi, 1, &st, &u);
+            y_[j_] = u;,
+            1,
+            out[i_ + j_] = MIST__FN(mist_draine_sample)(g, alpha, x_[j_]);)
+#else
+        MIST__BLOCKS_FB(    /* mist__draine_finish, _solve, _ddfin's first step */
+            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+            MIST__T sg = MIST__M(copysign)(MIST__C(1), MIST__C(0.5) - xi);  /* as in */
+            MIST__T x = xi < MIST__C(1) - xi ? xi : MIST__C(1) - xi;   /* _try6x */
+            MIST__T u; MIST__T r; MIST__T s; MIST__T uh; MIST__T lo; MIST__T hi;
+            int odd; int c;
+            MIST__T ud = mist__draine_eq6x(sg * gs, alpha, x, 1, &odd);
+            c = MIST__FN(mist__draine_dd1)(sg * gs, MIST__C(1), alpha, x, ud, &u, &r, &s,
+                                           &uh, &lo, &hi);
+            u = sg * u;
+            y_[j_] = u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+            f_[j_] = (unsigned char)!((c == 1) & !odd & (x > z) & (ud > -one) & (ud < one));,
+            1,
+            out[i_ + j_] = MIST__FN(mist_draine_sample)(g, alpha, x_[j_]);)
+#endif
+        return;
+    }
+#endif
 #if !defined(MIST_NO_FOG) && !defined(__CUDA_ARCH__)
     if (n != 0 && n >= (size_t)MIST_DRAINE_PREPARE_N) {
         MIST__FN(mist_phase) p = MIST__FN(mist_phase_draine)(g, alpha);
@@ -2769,6 +2875,7 @@ MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST
 #endif
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_draine_sample)(g, alpha, in[i]);
 }
+#undef MIST__DRAINE_V
 #endif /* !MIST_NO_DRAINE */
 
 #ifndef MIST_NO_RAYLEIGH

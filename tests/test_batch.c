@@ -15,8 +15,9 @@
  * |g| > 1, NaN, alpha = 0, +inf, negative, NaN); lengths 0 (NULL arrays),
  * 1, 15, 16, 17, 31, 32, 33 (the block is 32), 100, 1023, 1024 (from
  * MIST_DRAINE_PREPARE_N = 1024 on, the unprepared Draine batch sampler is
- * the prepared one's: compared with mist_phase_sample) and 1100; in place; and
- * no element past n is written.  Built twice by CMake: with the project's
+ * the prepared one's, compared with mist_phase_sample, except where its
+ * eq. 6 kernel applies, mist__draine_vn: there the scalar function's at
+ * every n) and 1100; in place; and no element past n is written.  Built twice by CMake: with the project's
  * flags and with -march=native -fno-math-errno (so that the vectorised
  * code is what is compared).  The comparison is by bits (a -0 for a +0 or
  * a different NaN would fail); a negative control checks that it sees a
@@ -64,9 +65,12 @@
  * it. */
 #define DR_BAR (FMA_ULPS > 0)
 
+/* (eq. 6's domain, where the unprepared Draine batch has its kernel: 1e-3
+ * <= |g| <= 0.9999, 1e-6 <= alpha <= 1e4; its edges and either side) */
 static const double g_list[] = { 0, 0.3, -0.3, 0.8, -0.95, 0.999, -0.9999, 1e-6, -1e-6,
-                                  1, -1, 1.5, -7, NAN, INFINITY };
-static const double a_list[] = { 0, 1e-7, 1, 17, 250, 1e4, 1e9, INFINITY, -1, NAN };
+                                  1e-3, -0.99991, 1, -1, 1.5, -7, NAN, INFINITY };
+static const double a_list[] = { 0, 1e-7, 1e-6, 1, 17, 250, 1e4, 10001, 1e9, INFINITY, -1,
+                                  NAN };
 static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PREPARE_N - 1,
                               MIST_DRAINE_PREPARE_N, NMAX };
 
@@ -131,10 +135,12 @@ static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      
 }                                                                                 \
                                                                                   \
 /* the scalar function of kind k for a batch of n (the unprepared Draine  */   \
-/* batch of n >= MIST_DRAINE_PREPARE_N is the prepared sampler's)           */   \
+/* batch of n >= MIST_DRAINE_PREPARE_N is the prepared sampler's, but for  */   \
+/* its eq. 6 kernel's media)                                                */   \
 static T scalar_##T(int k, T g, T a, T x, int n)                                 \
 {                                                                                 \
-    if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N) k = PD_SAMPLE;              \
+    if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N && !CAT(mist__draine_vn, S)(g, a)) \
+        k = PD_SAMPLE;                                                            \
     switch (k) {                                                                  \
     case PD_EVAL: case PF_EVAL:                                                   \
                     return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
