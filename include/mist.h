@@ -2040,11 +2040,15 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
 MIST__F MIST__HOT int MIST__FN(mist__draine_try6x)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                    int vec, MIST__T *st, MIST__T *u)
 {
-    /* the mirror by copysign and a min, not selects on xi > 1/2: gcc
-     * specialised the whole body for sg = +-1 and would not vectorise it */
-    MIST__W xw = (MIST__W)xi, sg = MIST__WFN(copysign)((MIST__W)1, (MIST__W)0.5 - xw), ud;
-    MIST__W x = xw < 1 - xw ? xw : 1 - xw;            /* exact: xi a float */
-    int odd;
+    /* The mirror (xi > 1/2: sg = -1, x = 1 - xi, exact): in the batch by
+     * copysign and a min, as gcc specialised the whole body for sg = +-1
+     * by the selects and would not vectorise it; one at a time by the
+     * selects, 42 against 47 ns a sample by the others (gcc 12 -O3
+     * -march=native, measured) */
+    int m = xi > MIST__C(0.5), odd;
+    MIST__W xw = (MIST__W)xi, ud;
+    MIST__W sg = vec ? MIST__WFN(copysign)((MIST__W)1, (MIST__W)0.5 - xw) : (m ? -1 : 1);
+    MIST__W x = vec ? (xw < 1 - xw ? xw : 1 - xw) : (m ? 1 - xw : xw);
     ud = sg * (MIST__W)mist__draine_eq6x((double)sg * (double)g, (double)alpha, (double)x,
                                          vec, &odd);
     *st = (MIST__T)ud;
