@@ -1774,6 +1774,38 @@ MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST
 #endif
 
 #ifndef MIST__INTERNAL_ONLY
+/* Blocks for the vectorised loops (the batch forms; the Draine kernel that
+ * also builds a prepared table's nodes). */
+/* 32: gcc -O3 completely unrolls loops of up to 16 iterations before it
+ * vectorises, and the unrolled, branchy code no longer vectorises. */
+#define MIST__BLK 32
+/* Runs STMT (which sets y_[j_] from x_[j_]) over in[0..n) in blocks. */
+#define MIST__BLOCKS(STMT) MIST__BLOCKS_FB(STMT, 0, (void)0)
+/* The same; where NEED, STMT may set f_[j_] != 0 to have FIX (branchy;
+ * x_[j_] is the element's input, out[i_ + j_] its place, already holding
+ * y_[j_]) redo that element after the block is stored. */
+#define MIST__BLOCKS_FB(STMT, NEED, FIX)                                     \
+    {   MIST__T x_[MIST__BLK], y_[MIST__BLK];                                \
+        unsigned char f_[MIST__BLK];                                         \
+        size_t i_, j_, m_;                                                   \
+        for (i_ = 0; i_ < n; i_ += m_) {                                     \
+            m_ = n - i_;                                                     \
+            if (m_ >= MIST__BLK) {                                           \
+                m_ = MIST__BLK;                                              \
+                for (j_ = 0; j_ < MIST__BLK; ++j_) x_[j_] = in[i_ + j_];     \
+            } else {                                                         \
+                for (j_ = 0; j_ < MIST__BLK; ++j_)                           \
+                    x_[j_] = j_ < m_ ? in[i_ + j_] : MIST__C(0);             \
+            }                                                                \
+            for (j_ = 0; j_ < MIST__BLK; ++j_) { STMT; }                     \
+            if (m_ == MIST__BLK)                                             \
+                for (j_ = 0; j_ < MIST__BLK; ++j_) out[i_ + j_] = y_[j_];    \
+            else                                                             \
+                for (j_ = 0; j_ < m_; ++j_) out[i_ + j_] = y_[j_];           \
+            if (NEED)                                                        \
+                for (j_ = 0; j_ < m_; ++j_) if (f_[j_]) { FIX; }             \
+        } }
+
 #ifndef MIST_NO_DRAINE
 #ifdef MIST__W
 /* The half-width of the window a step's u1 is rounded within: its bound
@@ -2034,9 +2066,10 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
  * within that of a midpoint.  Against eq. 6 and the solver's Newton step
  * and rounding, this is eq. 6 and one residual's latency (measured in
  * "Draine and Cornette-Shanks: exact sampling").  mist__draine_try6x: the
- * try without its domain test (mist__draine_ok6), branch-free: the batch form runs it over a block (vec = 1: mist__cbrt_m, and
- * 0 where eq. 6's cube root argument s is odd, which the scalar try gives
- * to libm's cbrt; elsewhere the same arithmetic, so the same answers). */
+ * try without its domain test (mist__draine_ok6), branch-free: the batch
+ * form runs it over a block (vec = 1: mist__cbrt_m, and 0 where eq. 6's
+ * cube root argument s is odd, which the scalar try gives to libm's cbrt;
+ * elsewhere the same arithmetic, so the same answers). */
 MIST__F MIST__HOT int MIST__FN(mist__draine_try6x)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                    int vec, MIST__T *st, MIST__T *u)
 {
@@ -2117,6 +2150,77 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
 {
     return MIST__FN(mist_draine_sample)(g, MIST__C(1), xi);
 }
+
+/* The unprepared Draine batch samplers' kernel, where square roots
+ * vectorise (no errno: -fno-math-errno, implied by -ffast-math) and on the
+ * host: in float, and in double where fma is one instruction.  It computes
+ * the scalar sampler's first try over a block: [JD23 eq. 6] in double and
+ * its certificate (float: mist__draine_try6x) or one compensated Newton
+ * step (double: mist__draine_dd1, the first step of mist__draine_ddfin,
+ * which mist__draine_solve takes from eq. 6's answer); the elements it does
+ * not settle (the certificate fails, or the step does not settle: 0-4%)
+ * take the scalar function.  So every value is mist_draine_sample's, bit
+ * for bit, at every n, with no preparation (this replaced preparing the
+ * medium from 1024 elements on within eq. 6's domain, which gave the
+ * prepared sampler's values; see "Batch forms" in README.md).  A prepared
+ * medium's start table takes its 129 nodes from it too: the same nodes,
+ * and preparing costs a quarter of what it did (README.md, "Prepared phase
+ * functions"). */
+#if !defined(__CUDA_ARCH__) && defined(__NO_MATH_ERRNO__) \
+    && (defined(MIST__W_EXACT) || defined(MIST__DDV))
+#  define MIST__DRAINE_V 1
+#endif
+/* 1 where mist_draine_sample_n takes that kernel (eq. 6's domain, after
+ * sanitising; a prepared medium's table too) */
+MIST__F int MIST__FN(mist__draine_vn)(MIST__T g, MIST__T alpha)
+{
+#if defined(MIST__DRAINE_V)
+    return MIST__FN(mist__draine_ok6)(MIST__FN(mist__g)(g), alpha > MIST__C(0) ? alpha
+                                                                           : MIST__C(0));
+#else
+    (void)g; (void)alpha;
+    return 0;
+#endif
+}
+
+#if defined(MIST__DRAINE_V)
+/* That kernel over in[0..n) at sanitised g and alpha in eq. 6's domain
+ * (c0, c1 its weights), f0 as for mist__draine_sample (a prepared medium's
+ * F_g(0), for the elements it leaves; else NULL). */
+MIST__F void MIST__FN(mist__draine_vk)(MIST__T g, MIST__T alpha, MIST__T c0, MIST__T c1,
+                                       const MIST__T *f0, const MIST__T *in, MIST__T *out,
+                                       size_t n)
+{
+    volatile MIST__T z0 = 0;
+    MIST__T z = z0, one = z + 1;
+#if defined(MIST__W_EXACT)
+    MIST__BLOCKS_FB(
+        MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+        MIST__T st; MIST__T u;
+        f_[j_] = (unsigned char)!MIST__FN(mist__draine_try6x)(g, alpha, xi, 1, &st, &u);
+        y_[j_] = u;,
+        1,
+        out[i_ + j_] = MIST__FN(mist__draine_sample)(g, alpha, c0, c1,
+            MIST__FN(mist__clamp)(x_[j_], MIST__C(0), MIST__C(1)), f0, MIST__NULL);)
+#else
+    MIST__BLOCKS_FB(    /* mist__draine_finish, _solve, _ddfin's first step */
+        MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
+        MIST__T sg = MIST__M(copysign)(MIST__C(1), MIST__C(0.5) - xi);  /* as in */
+        MIST__T x = xi < MIST__C(1) - xi ? xi : MIST__C(1) - xi;   /* _try6x */
+        MIST__T u; MIST__T r; MIST__T s; MIST__T uh; MIST__T lo; MIST__T hi;
+        int odd; int c;
+        MIST__T ud = mist__draine_eq6x(sg * g, alpha, x, 1, &odd);
+        c = MIST__FN(mist__draine_dd1)(sg * g, MIST__C(1), alpha, x, ud, &u, &r, &s,
+                                       &uh, &lo, &hi);
+        u = sg * u;
+        y_[j_] = u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
+        f_[j_] = (unsigned char)!((c == 1) & !odd & (x > z) & (ud > -one) & (ud < one));,
+        1,
+        out[i_ + j_] = MIST__FN(mist__draine_sample)(g, alpha, c0, c1,
+            MIST__FN(mist__clamp)(x_[j_], MIST__C(0), MIST__C(1)), f0, MIST__NULL);)
+#endif
+}
+#endif
 #endif /* !MIST_NO_DRAINE */
 
 #ifndef MIST_NO_RAYLEIGH
@@ -2236,8 +2340,9 @@ MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 /* the same safeguarded Newton iteration and stop as the unprepared         */
 /* sampler, so the result meets the same bar (tested in                     */
 /* tests/test_accuracy.c, which fails with an unsound stop, kb = 0).        */
-/* Preparing Draine costs 129 exact samples; the struct is ~3.1 KB          */
-/* (double), ~1.6 KB (float).                                               */
+/* Preparing Draine costs 129 exact samples (by the unprepared batch       */
+/* sampler's kernel where it applies: mist__draine_vk); the struct is ~3.1  */
+/* KB (double), ~1.6 KB (float).                                            */
 /* Results equal the unprepared functions' to a few ulps (the density's     */
 /* rounding order differs, and the sampler's stop may land one ulp apart),  */
 /* except where the inverse CDF is ill-conditioned: both samplers meet the  */
@@ -2265,7 +2370,7 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
 {
     MIST__PHASE p;
     MIST__T c0, c1, cn, nh, nd;
-    int i;
+    int i, nodes = 0;
 #ifdef MIST__W
     MIST__W c0w, c1w, fw;
 #endif
@@ -2318,13 +2423,24 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
     /* the start table: the exact u at xi = j/K and the slopes du/dxi / K =
      * 2 cn V^3 / ((1-g^2)(c0 + c1 u^2) K), limited to 3x the neighbouring
      * secants (finite where the density is 0, and a monotone interpolant) */
-    for (i = 0; i <= MIST__PHASE_K; ++i) {
-        MIST__T u = MIST__C(0), v2;
+#if defined(MIST__DRAINE_V)
+    if (p.w > MIST__C(0) && MIST__FN(mist__draine_vn)(p.g, p.alpha)) {  /* the batch kernel: */
+        MIST__T xs[MIST__PHASE_K + 1];                 /* the same nodes, 4-5x faster */
+        for (i = 0; i <= MIST__PHASE_K; ++i) xs[i] = (MIST__T)i / MIST__PHASE_K;
+        MIST__FN(mist__draine_vk)(p.g, p.alpha, c0, c1, p.f0, xs, p.tab,
+                                  (size_t)MIST__PHASE_K + 1);
+        nodes = 1;
+    }
+#endif
+    for (i = 0; i <= MIST__PHASE_K && !nodes; ++i) {
+        MIST__T u = MIST__C(0);
         if (p.w > MIST__C(0) && c1 != MIST__C(0) && p.g < MIST__C(1) && p.g > MIST__C(-1))
             u = MIST__FN(mist__draine_sample)(p.g, p.alpha, c0, c1,
                                               (MIST__T)i / MIST__PHASE_K, p.f0, MIST__NULL);
-        v2 = MIST__FN(mist__v2)(p.g, u);
         p.tab[i] = u;
+    }
+    for (i = 0; i <= MIST__PHASE_K; ++i) {
+        MIST__T u = p.tab[i], v2 = MIST__FN(mist__v2)(p.g, u);
         p.tab[MIST__PHASE_K + 1 + i] = MIST__C(2) * cn * v2 * MIST__M(sqrt)(v2)
             / ((MIST__C(1) - p.g) * (MIST__C(1) + p.g) * (c0 + c1 * u * u) * MIST__PHASE_K);
     }
@@ -2685,36 +2801,6 @@ MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
 /* are not.                                                                 */
 /* ======================================================================== */
 
-/* 32: gcc -O3 completely unrolls loops of up to 16 iterations before it
- * vectorises, and the unrolled, branchy code no longer vectorises. */
-#define MIST__BLK 32
-/* Runs STMT (which sets y_[j_] from x_[j_]) over in[0..n) in blocks. */
-#define MIST__BLOCKS(STMT) MIST__BLOCKS_FB(STMT, 0, (void)0)
-/* The same; where NEED, STMT may set f_[j_] != 0 to have FIX (branchy;
- * x_[j_] is the element's input, out[i_ + j_] its place, already holding
- * y_[j_]) redo that element after the block is stored. */
-#define MIST__BLOCKS_FB(STMT, NEED, FIX)                                     \
-    {   MIST__T x_[MIST__BLK], y_[MIST__BLK];                                \
-        unsigned char f_[MIST__BLK];                                         \
-        size_t i_, j_, m_;                                                   \
-        for (i_ = 0; i_ < n; i_ += m_) {                                     \
-            m_ = n - i_;                                                     \
-            if (m_ >= MIST__BLK) {                                           \
-                m_ = MIST__BLK;                                              \
-                for (j_ = 0; j_ < MIST__BLK; ++j_) x_[j_] = in[i_ + j_];     \
-            } else {                                                         \
-                for (j_ = 0; j_ < MIST__BLK; ++j_)                           \
-                    x_[j_] = j_ < m_ ? in[i_ + j_] : MIST__C(0);             \
-            }                                                                \
-            for (j_ = 0; j_ < MIST__BLK; ++j_) { STMT; }                     \
-            if (m_ == MIST__BLK)                                             \
-                for (j_ = 0; j_ < MIST__BLK; ++j_) out[i_ + j_] = y_[j_];    \
-            else                                                             \
-                for (j_ = 0; j_ < m_; ++j_) out[i_ + j_] = y_[j_];           \
-            if (NEED)                                                        \
-                for (j_ = 0; j_ < m_; ++j_) if (f_[j_]) { FIX; }             \
-        } }
-
 /* The Dirac limit |g| = 1 of every eval: +inf at u = g, else 0 (NaN: 0). */
 MIST__F void MIST__FN(mist__dirac_n)(MIST__T g, const MIST__T *in, MIST__T *out, size_t n)
 {
@@ -2795,35 +2881,6 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                                            MIST__T *out, size_t n);
 #endif
 
-/* The unprepared Draine batch samplers' kernel, where square roots
- * vectorise (no errno: -fno-math-errno, implied by -ffast-math) and on the
- * host: in float, and in double where fma is one instruction.  It computes
- * the scalar sampler's first try over a block: [JD23 eq. 6] in double and
- * its certificate (float: mist__draine_try6x) or one compensated Newton
- * step (double: mist__draine_dd1, the first step of mist__draine_ddfin,
- * which mist__draine_solve takes from eq. 6's answer); the elements it does
- * not settle (the certificate fails, or the step does not settle: 0-4%)
- * take the scalar function.  So every value is mist_draine_sample's, bit
- * for bit, at every n, with no preparation (this replaced preparing the
- * medium from 1024 elements on within eq. 6's domain, which gave the
- * prepared sampler's values; see "Batch forms" in README.md). */
-#if !defined(__CUDA_ARCH__) && defined(__NO_MATH_ERRNO__) \
-    && (defined(MIST__W_EXACT) || defined(MIST__DDV))
-#  define MIST__DRAINE_V 1
-#endif
-/* 1 where mist_draine_sample_n takes that kernel (eq. 6's domain, after
- * sanitising) */
-MIST__F int MIST__FN(mist__draine_vn)(MIST__T g, MIST__T alpha)
-{
-#if defined(MIST__DRAINE_V)
-    return MIST__FN(mist__draine_ok6)(MIST__FN(mist__g)(g), alpha > MIST__C(0) ? alpha
-                                                                           : MIST__C(0));
-#else
-    (void)g; (void)alpha;
-    return 0;
-#endif
-}
-
 /* Draine sample of each in[i] = xi.  Where the kernel above applies, the
  * scalar values at every n.  Elsewhere: below MIST_DRAINE_PREPARE_N
  * elements a loop over mist_draine_sample; from there on the batch is one
@@ -2840,33 +2897,9 @@ MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST
     size_t i;
 #if defined(MIST__DRAINE_V)
     if (MIST__FN(mist__draine_vn)(g, alpha)) {
-        volatile MIST__T z0 = 0;
-        MIST__T z = z0, one = z + 1;
-        MIST__T gs = MIST__FN(mist__g)(g);       /* (alpha: in eq. 6's domain) */
-#if defined(MIST__W_EXACT)
-        MIST__BLOCKS_FB(
-            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-            MIST__T st; MIST__T u;
-            f_[j_] = (unsigned char)!MIST__FN(mist__draine_try6x)(gs, alpha, xi, 1, &st, &u);
-            y_[j_] = u;,
-            1,
-            out[i_ + j_] = MIST__FN(mist_draine_sample)(g, alpha, x_[j_]);)
-#else
-        MIST__BLOCKS_FB(    /* mist__draine_finish, _solve, _ddfin's first step */
-            MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-            MIST__T sg = MIST__M(copysign)(MIST__C(1), MIST__C(0.5) - xi);  /* as in */
-            MIST__T x = xi < MIST__C(1) - xi ? xi : MIST__C(1) - xi;   /* _try6x */
-            MIST__T u; MIST__T r; MIST__T s; MIST__T uh; MIST__T lo; MIST__T hi;
-            int odd; int c;
-            MIST__T ud = mist__draine_eq6x(sg * gs, alpha, x, 1, &odd);
-            c = MIST__FN(mist__draine_dd1)(sg * gs, MIST__C(1), alpha, x, ud, &u, &r, &s,
-                                           &uh, &lo, &hi);
-            u = sg * u;
-            y_[j_] = u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
-            f_[j_] = (unsigned char)!((c == 1) & !odd & (x > z) & (ud > -one) & (ud < one));,
-            1,
-            out[i_ + j_] = MIST__FN(mist_draine_sample)(g, alpha, x_[j_]);)
-#endif
+        MIST__T c0, c1;
+        MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+        MIST__FN(mist__draine_vk)(MIST__FN(mist__g)(g), alpha, c0, c1, MIST__NULL, in, out, n);
         return;
     }
 #endif
@@ -2879,7 +2912,6 @@ MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST
 #endif
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_draine_sample)(g, alpha, in[i]);
 }
-#undef MIST__DRAINE_V
 #endif /* !MIST_NO_DRAINE */
 
 #ifndef MIST_NO_RAYLEIGH
@@ -3085,10 +3117,11 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 }
 #endif /* !MIST_NO_FOG */
 
+#endif /* !MIST_NO_BATCH */
 #undef MIST__BLOCKS
 #undef MIST__BLOCKS_FB
 #undef MIST__BLK
-#endif /* !MIST_NO_BATCH */
+#undef MIST__DRAINE_V
 
 #ifndef MIST_NO_HFOG
 /* ======================================================================== */

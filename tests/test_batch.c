@@ -214,6 +214,26 @@ static void check_##T(int k, T g, T a, mt_rng *r)                               
                  kind_name[k], #S, (double)g, (double)a, n, bad);                 \
     }                                                                             \
     batch_##T(k, g, a, NULL, NULL, 0);          /* n = 0, NULL: nothing */       \
+}                                                                                 \
+                                                                                  \
+/* A prepared Draine medium's start table (mist__phase_make): its nodes u  */   \
+/* at xi = j/K are the scalar sampler's (mist__draine_sample with the      */   \
+/* medium's F(0), as the table had them before the batch kernel built     */   \
+/* them: mist__draine_vn media), bit for bit; 0 without a Draine lobe.     */   \
+static int nodes_##T(T g, T a, int bad)                                          \
+{                                                                                 \
+    CAT(mist_phase, S) p = CAT(mist_phase_draine, S)(g, a);                       \
+    T gs = CAT(mist__g, S)(g), as = a > 0 ? a : 0, c0, c1, u;                     \
+    int j;                                                                        \
+    CAT(mist__draine_c, S)(as, &c0, &c1);                                         \
+    if (bad) p.tab[bad] = NEXT(p.tab[bad], (T)2);      /* the control */          \
+    for (j = 0; j <= MIST__PHASE_K; ++j) {                                        \
+        u = c1 != 0 && gs < 1 && gs > -1                                          \
+          ? CAT(mist__draine_sample, S)(gs, as, c0, c1, (T)j / MIST__PHASE_K, p.f0, NULL) \
+          : (T)0;                                                                 \
+        if (!bits_##T(u, p.tab[j])) return 0;                                     \
+    }                                                                             \
+    return 1;                                                                     \
 }
 
 DEFINE_TYPE(double, , nextafter)
@@ -233,6 +253,15 @@ int main(void)
                 check_double(k, g, a, &r);
                 check_float(k, (float)g, (float)a, &r);
             }
+    for (gi = 0; gi < sizeof g_list / sizeof g_list[0]; ++gi)
+        for (ai = 0; ai < sizeof a_list / sizeof a_list[0]; ++ai) {
+            double g = g_list[gi], a = a_list[ai];
+            mt_check(nodes_double(g, a, 0) && nodes_float((float)g, (float)a, 0),
+                     "prepared table nodes g=%g a=%g: the scalar sampler's (kernel: %d)", g, a,
+                     mist__draine_vn(g, a));
+        }
+    mt_check(!nodes_double(0.5, 17, 7) && !nodes_float(0.5f, 17, 7),
+             "control: a node one ulp off must differ");
     /* negative controls: the comparison sees a change of one ulp more than
      * it allows (one ulp without FMA hardware), and the sign of 0 */
     {
