@@ -936,7 +936,9 @@ static double c_seg(void)  LOOP(double, mist_segment_linear(ud[i] + 1.5, xd[i], 
                                                            0.2, 0.01 + 4 * xd[(i * 7) % N], NULL))
 
 /* Preparing a medium (mist_phase_*, mist_fog_make): microseconds per call,
- * median of REPS calls (the Draine table is the cost). */
+ * median of REPS calls (the Draine table is the cost: its nodes by the
+ * unprepared batch sampler's eq. 6 kernel where that applies, else by the
+ * scalar sampler, as at g ~ 0 (cases 4, 5: outside eq. 6's domain)). */
 static double prep_us(int which)
 {
     static mist_phasef pf;                      /* scratch, not the rows' media */
@@ -950,7 +952,9 @@ static double prep_us(int which)
         case 1: pd = mist_phase_draine(0.5 + 1e-3 * i, 17.); sink += pd.tab[5]; break;
         case 2: pf = mist_phase_fogf(mist_fog_from_diameterf(5.f + (float)i)); sink += pf.tab[5];
                 break;
-        default: pd = mist_phase_fog(mist_fog_from_diameter(5. + i)); sink += pd.tab[5]; break;
+        case 3: pd = mist_phase_fog(mist_fog_from_diameter(5. + i)); sink += pd.tab[5]; break;
+        case 4: pf = mist_phase_drainef(1e-6f * (float)i, 1.f); sink += pf.tab[5]; break;
+        default: pd = mist_phase_draine(1e-6 * i, 1.); sink += pd.tab[5]; break;
         }
         t[i] = (now() - t0) * 1e6;
     }
@@ -1013,6 +1017,8 @@ static void coverage_rows(void)
            prep_us(0), REPS, prep_us(1));
     printf("%-34s %8.2f us  (median of %d; double: %.2f us)\n", "mist_phase_fogf (prepare)",
            prep_us(2), REPS, prep_us(3));
+    printf("%-34s %8.2f us  (median of %d; double: %.2f us)\n", "  the same, Draine g ~ 0, alpha 1",
+           prep_us(4), REPS, prep_us(5));
 
     printf("\nDirections (wi fixed, xi pairs from the stream):\n");
     base = c_bare_dirf;

@@ -2884,7 +2884,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* Draine sample of each in[i] = xi.  Where the kernel above applies, the
  * scalar values at every n.  Elsewhere: below MIST_DRAINE_PREPARE_N
  * elements a loop over mist_draine_sample; from there on the batch is one
- * medium, so it is prepared once (mist_phase_draine: the cost of ~150
+ * medium, so it is prepared once (mist_phase_draine: the cost of ~130-140
  * samples) and sampled by mist_phase_sample_n: the prepared sampler's
  * values, which meet the same bar and are monotone in xi but may differ
  * from mist_draine_sample's in the last bit (measured: 1.1e-4 of random xi
