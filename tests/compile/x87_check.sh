@@ -3,11 +3,16 @@
 # mist.h: a 32-bit x86 build with x87 math (gcc -m32: FLT_EVAL_METHOD 2)
 # must stop with its error; with MIST_ALLOW_EXCESS_PRECISION, or with SSE
 # math (-msse2 -mfpmath=sse: FLT_EVAL_METHOD 0), it must compile.  Exits 77
-# (ctest: skipped) where gcc cannot build 32-bit code (no multilib).
+# (ctest: skipped) where gcc cannot build 32-bit code against the C
+# library headers mist.h includes (no multilib: gcc's own <float.h> alone
+# compiles with only libc6-i386 installed, <math.h> then does not, which
+# failed this test on a fresh machine of 2026-12-01).
 inc=$1; dir=$2; out=$3
-printf '#include <float.h>\nint main(void) { return FLT_EVAL_METHOD != 2; }\n' > "$out.probe.c"
+printf '%s\n' '#include <math.h>' '#include <float.h>' '#include <stddef.h>' \
+    '#include <stdint.h>' '#include <string.h>' \
+    'int main(void) { return FLT_EVAL_METHOD != 2 || sqrt(4.0) != 2.0; }' > "$out.probe.c"
 if ! gcc -m32 -c "$out.probe.c" -o "$out.probe.o" >/dev/null 2>&1; then
-    echo "gcc -m32 cannot build (no 32-bit multilib): test skipped"
+    echo "gcc -m32 cannot build against the C library's headers (no 32-bit multilib, libc6-dev-i386): test skipped"
     exit 77
 fi
 w="-std=c99 -Wall -Wextra -Wpedantic -Werror -I$inc -I$dir -c $dir/compile_c.c -o $out.o"
