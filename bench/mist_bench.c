@@ -152,6 +152,10 @@ static double b_draine_sample(void)    LOOP(double, mist_draine_sample(0.5, 17.,
 /* g 0, alpha 1: outside eq. 6's domain, where the unprepared batch prepares */
 static double b_draine_samplef_g0(void) LOOP(float, mist_draine_samplef(0.f, 1.f, xf[i]))
 static double b_draine_sample_g0(void)  LOOP(double, mist_draine_sample(0., 1., xd[i]))
+/* g .9999, alpha 17: near |g| = 1, at the edge of eq. 6's domain, where the
+ * float certificate fails for most xi (u near 1) */
+static double b_draine_samplef_1(void) LOOP(float, mist_draine_samplef(0.9999f, 17.f, xf[i]))
+static double b_draine_sample_1(void)  LOOP(double, mist_draine_sample(0.9999, 17., xd[i]))
 static double b_eq6f_250(void)         LOOP(float, draine_eq6f(0.1f, 250.f, xf[i]))
 static double b_draine_samplef_250(void) LOOP(float, mist_draine_samplef(0.1f, 250.f, xf[i]))
 static double b_cs_samplef(void)       LOOP(float, mist_cs_samplef(0.7f, xf[i]))
@@ -495,6 +499,8 @@ static double n_draine_sample_64(void)
     NCHUNK(double, 64, mist_draine_sample_n(0.5, 17., xd + c, out_double + c, 64))
 static double n_draine_samplef_g0(void)
     NCALL(float, mist_draine_sample_nf(0.f, 1.f, xf, out_float, N))
+static double n_draine_samplef_1(void)
+    NCALL(float, mist_draine_sample_nf(0.9999f, 17.f, xf, out_float, N))
 static double n_draine_sample_g0(void)
     NCALL(double, mist_draine_sample_n(0., 1., xd, out_double, N))
 static double n_draine_samplef_chunk(void)
@@ -596,6 +602,7 @@ static void batch_rows(void)
                 b_draine_sample);
     row_speedup("mist_draine_sample_nf (0, 1: prepares once)", n_draine_samplef_g0,
                 b_draine_samplef_g0);
+    row_speedup("mist_draine_sample_nf (.9999, 17)", n_draine_samplef_1, b_draine_samplef_1);
     row_speedup("mist_draine_sample_n  (0, 1: prepares once)", n_draine_sample_g0,
                 b_draine_sample_g0);
     row_speedup("mist_draine_sample_nf (0, 1, n = " STR(MIST_DRAINE_PREPARE_N) " each)",
@@ -1195,6 +1202,9 @@ int main(void)
     row("mist_draine_samplef (g .5, a 17)", b_draine_samplef, "eq. 6 float", base);
     row("mist_draine_sample  (g .5, a 17)", b_draine_sample, "eq. 6 float", base);
     row("  the same, no long double, no fma", b_draine_sample_nold, "eq. 6 float", base);
+    base = b_draine_sample_1;
+    row("mist_draine_sample  (g .9999, a 17)", b_draine_sample_1, NULL, NULL);
+    row("mist_draine_samplef (g .9999, a 17)", b_draine_samplef_1, "double", base);
     base = b_eq6f_250;
     row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, NULL);
     row("mist_draine_samplef (g .1, a 250)", b_draine_samplef_250, "eq. 6 float", base);

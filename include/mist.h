@@ -1880,12 +1880,13 @@ MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
 
 /* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1); c0, c1:
  * the weights of alpha; f0: F_g(0) as hi + lo (a prepared phase function)
- * or NULL.  Newton in the wide type from [JD23 eq. 6] where it is good;
+ * or NULL; st: the start, a double also for float (mist__draine_try6x), 2
+ * for none.  Newton in the wide type from [JD23 eq. 6] where it is good;
  * else from the HG answer, in T to its noise and then in the wide type
  * (float: all in double, which costs no more). */
 MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c0,
                                              MIST__T c1, MIST__T x, const MIST__T *f0,
-                                             MIST__T st)
+                                             double st)
 {
     MIST__T u, t0 = MIST__C(0);
     int good;
@@ -1905,14 +1906,14 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
      * Newton from the far side of the root crept (f(u) >> f(u*)) and stopped
      * at 1 for 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18,
      * double), breaking accuracy and monotonicity. */
-    good = st > MIST__C(-1) && st < MIST__C(1) && g <= MIST__C(0.9999)
+    good = st > -1 && st < 1 && g <= MIST__C(0.9999)
            && g >= MIST__C(-0.9999);
     if (!good && MIST__FN(mist__draine_ok6)(g, alpha)) {
         double ud = mist__draine_eq6((double)g, (double)alpha, (double)x);
         good = ud > -1 && ud < 1 ? 2 : 0;
-        st = (MIST__T)ud;
+        st = ud;
     }
-    if (!good) st = MIST__FN(mist__hg_sample)(g, x);
+    if (!good) st = (double)MIST__FN(mist__hg_sample)(g, x);
 #if defined(MIST__DDR)
     /* double where fma is one instruction or long double is no wider: the
      * compensated finish, with the weights (1, alpha), exact, while they
@@ -1941,7 +1942,7 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
                                             MIST__WFN(mist__abs)(uw) * ((MIST__W)MIST__EPS / 16));
 #endif
     if (f0) t0 = (f0[0] - x) + f0[1];
-    u = st;
+    u = (MIST__T)st;
     MIST__FN(mist__draine_newton)(g, c0, c1, x, t0, f0 != MIST__NULL, MIST__C(16) * MIST__EPS,
                                   MIST__MAXIT, &u);
 #if defined(MIST__DDR)
@@ -1984,10 +1985,11 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__
  * (mist__draine_step) finish it, else 0 (the caller goes on from *st:
  * mist__draine_finish). */
 MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const MIST__T *tab,
-                                                MIST__T xi, MIST__T *st, MIST__T *u)
+                                                MIST__T xi, double *st, MIST__T *u)
 {
     int j;
-    *st = MIST__FN(mist__phase_start)(tab, xi, &j);
+    MIST__T s0 = MIST__FN(mist__phase_start)(tab, xi, &j);
+    *st = (double)s0;
 #if defined(MIST__W) || defined(MIST__DDR)
     {   /* no branch on xi (see mist__draine_step); a second step only from
          * inside [u_j, u_j+1], kb's range.  Double: first one step in T (long
@@ -1995,11 +1997,11 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
          * is no wider the compensated finish (mist__draine_ddfin), else the
          * wide steps. */
         int ok;
-        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = *st;
+        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = s0;
         kb = tab[2 * MIST__PHASE_K + 2 + j];
         if (MIST__DBL) {
             MIST__T et;
-            ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, *st, kb,
+            ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, s0, kb,
                                              MIST__C(0), &ok, &et);
             if (ut >= tab[j] && ut <= tab[j + 1]) us = ut;
         }
@@ -2081,7 +2083,11 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
  * in [0, 1]: [JD23 eq. 6] in double where it is good (as in
  * mist__draine_solve; x = min(xi, 1 - xi) by the mirror), rounded to float
  * and certified (mist__draine_cert): returns 1 with the sample in *u, else
- * 0 with eq. 6's answer in *st for mist__draine_finish.  Eq. 6 is within
+ * 0 with eq. 6's answer in *st for mist__draine_finish, in double: rounded
+ * to float it had been a poor start where the certificate fails most, near
+ * |g| = 1 and u = 1, where V^2 is comparable with a float ulp (Newton from
+ * a float ulp away crept: mist_bench, mist_draine_samplef at g .9999,
+ * alpha 17: 149-154 -> 80-89 ns, the same samples).  Eq. 6 is within
  * 1e-12 of u* almost everywhere there, so it fails mostly where u* lies
  * within that of a midpoint.  Against eq. 6 and the solver's Newton step
  * and rounding, this is eq. 6 and one residual's latency (measured in
@@ -2091,7 +2097,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
  * cube root argument s is odd, which the scalar try gives to libm's cbrt;
  * elsewhere the same arithmetic, so the same answers). */
 MIST__F MIST__HOT int MIST__FN(mist__draine_try6x)(MIST__T g, MIST__T alpha, MIST__T xi,
-                                                   int vec, MIST__T *st, MIST__T *u)
+                                                   int vec, double *st, MIST__T *u)
 {
     int m = xi > MIST__C(0.5), odd;         /* the mirror: see mist__mirror */
     MIST__W xw = (MIST__W)xi, ud, sg, x;
@@ -2099,13 +2105,13 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_try6x)(MIST__T g, MIST__T alpha, MIS
     else { sg = m ? -1 : 1; x = m ? 1 - xw : xw; }
     ud = sg * (MIST__W)mist__draine_eq6x((double)sg * (double)g, (double)alpha, (double)x,
                                          vec, &odd);
-    *st = (MIST__T)ud;
-    *u = *st;
+    *st = ud;
+    *u = (MIST__T)ud;
     return MIST__FN(mist__draine_cert)(g, alpha, xi, ud, (MIST__W)0.7) & !(vec & odd)
            & (x > 0);
 }
 MIST__F MIST__HOT int MIST__FN(mist__draine_try6)(MIST__T g, MIST__T alpha, MIST__T xi,
-                                                  MIST__T *st, MIST__T *u)
+                                                  double *st, MIST__T *u)
 {
     if (!MIST__FN(mist__draine_ok6)(g, alpha)) return 0;
     return MIST__FN(mist__draine_try6x)(g, alpha, xi, 0, st, u);
@@ -2121,12 +2127,12 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_try6)(MIST__T g, MIST__T alpha, MIST
  * either way) */
 MIST__F MIST__T MIST__FN(mist__draine_finish)(MIST__T g, MIST__T alpha, MIST__T c0,
                                               MIST__T c1, MIST__T xi, const MIST__T *f0,
-                                              MIST__T st)
+                                              double st)
 {
     int m = xi > MIST__C(0.5);
     MIST__T s = m ? MIST__C(-1) : MIST__C(1);
     MIST__T u = s * MIST__FN(mist__draine_solve)(s * g, alpha, c0, c1, m ? MIST__C(1) - xi : xi,
-                                                 f0 ? f0 + 2 * m : f0, s * st);
+                                                 f0 ? f0 + 2 * m : f0, (double)s * st);
     return u < MIST__C(-1) ? MIST__C(-1) : (u > MIST__C(1) ? MIST__C(1) : u);
 }
 
@@ -2136,7 +2142,8 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
                                               MIST__T c1, MIST__T xi, const MIST__T *f0,
                                               const MIST__T *tab)
 {
-    MIST__T u, st = MIST__C(2);
+    MIST__T u;
+    double st = 2;
     if (g == MIST__C(1) || g == MIST__C(-1)) return g;
     if (c1 == MIST__C(0)) return MIST__FN(mist__hg_any)(g, xi);   /* (mist_hg_sample) */
     if (tab && MIST__FN(mist__phase_try)(g, alpha, tab, xi, &st, &u)) return u;
@@ -2211,7 +2218,7 @@ MIST__F void MIST__FN(mist__draine_vk)(MIST__T g, MIST__T alpha, MIST__T c0, MIS
 #if defined(MIST__W_EXACT)
     MIST__BLOCKS_FB(
         MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-        MIST__T st; MIST__T u;
+        double st; MIST__T u;
         f_[j_] = (short)!MIST__FN(mist__draine_try6x)(g, alpha, xi, 1, &st, &u);
         y_[j_] = u;,
         1,
@@ -2560,7 +2567,8 @@ MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
     if (p->kind == 1) return MIST__FN(mist_rayleigh_sample)(xi);
 #endif
     {
-        MIST__T x, sg, st, u;
+        MIST__T x, sg, u;
+        double st;
         int dr = MIST__FN(mist__fog_pick)(xi, w, &x, &sg);
         if (sg < MIST__C(0))       /* a fog's xi' within 1024 eps of 1: the
                                     * mirror, unprepared (mist_fog_sample) */

@@ -649,9 +649,9 @@ static void test_cert(void)
     long n = mt_scale(20000, 2000), i, valid = 0, acc = 0, wrong = 0, tried = 0, off = 0;
     long wrong_ctl = 0;
     for (i = 0; i < n; ++i) {
-        double t = mt_uniform(&r), x = mt_uniform(&r), ud, c[4];
+        double t = mt_uniform(&r), x = mt_uniform(&r), ud, st, c[4];
         float g = (float)(mt_uniform(&r) < 0.2 ? 1 - pow(10, -1 - 3 * t) : pow(10, -3 * t));
-        float a = (float)pow(10, -6 + 10 * mt_uniform(&r)), xi, rn, u, st, lo, hi;
+        float a = (float)pow(10, -6 + 10 * mt_uniform(&r)), xi, rn, u, lo, hi;
         int j;
         qreal q;
         g = g > 0.9999f ? 0.9999f : g;
