@@ -155,6 +155,7 @@ static double b_draine_sample_g0(void)  LOOP(double, mist_draine_sample(0., 1., 
 /* g .9999, alpha 17: near |g| = 1, at the edge of eq. 6's domain, where the
  * float certificate fails for most xi (u near 1) */
 static double b_draine_samplef_1(void) LOOP(float, mist_draine_samplef(0.9999f, 17.f, xf[i]))
+static double b_draine_samplef_999(void) LOOP(float, mist_draine_samplef(0.999f, 17.f, xf[i]))
 static double b_draine_sample_1(void)  LOOP(double, mist_draine_sample(0.9999, 17., xd[i]))
 static double b_eq6f_250(void)         LOOP(float, draine_eq6f(0.1f, 250.f, xf[i]))
 static double b_draine_samplef_250(void) LOOP(float, mist_draine_samplef(0.1f, 250.f, xf[i]))
@@ -211,7 +212,15 @@ static double b_phase_hg_samplef(void) LOOP(float, mist_phase_samplef(&ph_hgf, x
 static double b_phase_draine_evalf(void) LOOP(float, mist_phase_evalf(&ph_drf, uf[i]))
 static double b_phase_draine_samplef(void) LOOP(float, mist_phase_samplef(&ph_drf, xf[i]))
 static double b_phase_draine_sample(void) LOOP(double, mist_phase_sample(&ph_dr, xd[i]))
-static mist_phasef ph_dr250f, ph_csf;
+static mist_phasef ph_dr250f, ph_csf, ph_dr999f;
+/* g .999, alpha 17: a float medium that samples as the unprepared sampler
+ * (mist__phase_near1f) */
+static double b_phase_dr999_samplef(void) LOOP(float, mist_phase_samplef(&ph_dr999f, xf[i]))
+static double n_phase_dr999_samplef(void)
+{
+    mist_phase_sample_nf(&ph_dr999f, xf, out_float, N);
+    return (double)out_float[N / 2];
+}
 static double b_phase_dr250_samplef(void) LOOP(float, mist_phase_samplef(&ph_dr250f, xf[i]))
 static double b_phase_cs_samplef(void) LOOP(float, mist_phase_samplef(&ph_csf, xf[i]))
 static double b_phase_fog_evalf(void)  LOOP(float, mist_phase_evalf(&ph_fogf, uf[i]))
@@ -408,6 +417,9 @@ static void prepared_rows(void)
     base = b_eq6f;
     row("mist_phase_samplef (Draine .5, 17)", b_phase_draine_samplef, "eq. 6 float", base);
     ph_dr250f = mist_phase_drainef(0.1f, 250.f);
+    ph_dr999f = mist_phase_drainef(0.999f, 17.f);
+    row("mist_phase_samplef (Draine .999, 17)", b_phase_dr999_samplef, "mist_draine_samplef",
+        b_draine_samplef_999);
     ph_csf = mist_phase_csf(0.7f);
     base = b_eq6f_250;
     row("eq. 6 float (g .1, a 250)", b_eq6f_250, NULL, NULL);
@@ -612,6 +624,8 @@ static void batch_rows(void)
     row_speedup("mist_phase_eval_nf (Draine .5, 17)", n_phase_dr_evalf, b_phase_draine_evalf);
     row_speedup("mist_phase_sample_nf (Draine .5, 17)", n_phase_dr_samplef,
                 b_phase_draine_samplef);
+    row_speedup("mist_phase_sample_nf (Draine .999, 17)", n_phase_dr999_samplef,
+                b_phase_dr999_samplef);
 #if defined(BENCH_FMA)
     row_speedup("mist_phase_sample_n  (Draine, double-double)", n_phase_dr_sample,
                 b_phase_draine_sample);

@@ -2551,6 +2551,22 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
     return MIST__FN(mist_hg_sample)(p->g_hg, xi);
 }
 
+#if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
+/* float: 1 where a prepared Draine lobe samples as the unprepared sampler
+ * (|g| >= 0.999; no start table): there the table's float nodes hold 1 - u
+ * (~1e-6 of the HG-like lobe's mass near u = 1 at g 0.999) only to a few
+ * percent, and from their start both straight-line steps missed their
+ * bound for 59% of xi (g 0.999, alpha 17, a one-off count): 62-69 ns a
+ * sample in the batch, where the unprepared batch kernel takes 10, and one
+ * at a time 69 against the unprepared 68 (87 / 73 at .9995, 102 / 90 at
+ * .9999; below .999 the table wins: 46 / 68 at .998).  The double lobe's
+ * compensated step settles from its double table (14-17 ns a sample). */
+MIST__F int MIST__FN(mist__phase_near1)(MIST__T g)
+{
+    return MIST__FN(mist__abs)(g) >= MIST__C(0.999);
+}
+#endif
+
 /* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0): the exact
  * inverse CDF, as the unprepared sampler of the same kind. */
 MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
@@ -2586,6 +2602,11 @@ MIST__F MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
              * without that step 78.6; README "On a GPU") */
             return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0,
                                                  MIST__NULL);
+#endif
+#if defined(MIST__W_EXACT)
+            if (MIST__FN(mist__phase_near1)(p->g))      /* mist_draine_samplef's values */
+                return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x,
+                                                     MIST__NULL, MIST__NULL);
 #endif
             if (MIST__FN(mist__phase_try)(p->g, p->alpha, p->tab, x, &st, &u)) return u;
             return MIST__FN(mist__draine_finish)(p->g, p->alpha, p->c0, p->c1, x, p->f0, st);
@@ -3085,6 +3106,16 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         const MIST__T *tab = p->tab;
 #if defined(MIST__W_EXACT)
         MIST__W gw = (MIST__W)p->g, fin = p->alpha < (MIST__T)INFINITY ? 1 : 0;
+        if (MIST__FN(mist__phase_near1)(p->g)) {    /* as unprepared: the kernel */
+#if defined(MIST__DRAINE_V)
+            if (MIST__FN(mist__draine_vn)(p->g, p->alpha)) {
+                MIST__FN(mist__draine_vk)(p->g, p->alpha, p->c0, p->c1, MIST__NULL, in, out, n);
+                return;
+            }
+#endif
+            for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_sample)(p, in[i]);
+            return;
+        }
         MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
         MIST__W u1[MIST__BLK], e1[MIST__BLK];
         MIST__FN(mist__pend) q;
