@@ -2036,19 +2036,29 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 /* The float Draine samplers' certificate: 1 where ud (0 < |ud| < 1, a W)
  * rounded to float is the root u* of F_g(u) = xi correctly rounded, as one
  * residual at ud proves (sanitised |g| < 1, alpha in (0, 2^21], xi in
- * [0, 1]); else 0 (also where ud rounds to 0 or +-1, or is NaN).  Let h be
+ * [0, 1]); else 0 (also where ud rounds to 0, or is NaN).  Let h be
  * the distance from ud to the nearer of the midpoints between its rounding
  * uf and uf's two float neighbours (exact: Sterbenz; h <= 2^-25, half the
- * float spacing below 1).  If f = F_g' >= fm on [ud - h, ud + h], then
+ * float spacing below 1).  Where uf = +-1 (|ud| < 1) that is the midpoint
+ * towards 0, 1 - 2^-25 (the one beyond, 1 + 2^-24, is farther), and the
+ * proof below needs only [ud - h, ud] (|u*| <= 1 puts u* on uf's side of
+ * the other): until 2026-12-01 those were refused, which near |g| = 1 was
+ * every failure (62% of xi at g .9999, alpha 17; 10% at .9995, 3% at .999,
+ * a one-off count).  If f = F_g' >= fm on [ud - h, ud + h], then
  * |F_g(ud) - xi| < h fm puts F_g(ud - h) < xi < F_g(ud + h): u* lies within
  * h of ud, so on uf's side of both midpoints.  fm: f = (1 - g^2) w V^-3 /
  * (2 cn) with w = 1 + alpha u^2 >= 1; over the interval w moves by at most
  * 2 alpha (|ud| + h) h <= 1/4 (1 + 2^-25) (alpha <= 2^21) and V^2 by at
- * most 2 |g| h, so with q = 2 |g| h / V^2(ud) and (1 + q)^-3/2 >= 1 - 3q/2,
- * f >= 0.7499 (1 - 3 |g| h / V^2) f(ud) = fm.  The residual r = S (F_g(ud)
+ * most 2 |g| h, so with q = 2 |g| h / V^2(ud) and (1 + q)^-3/2 >=
+ * 1 / (1 + 3q/2 + 3q^2/8) (the Taylor polynomial of (1 + q)^3/2 bounds it
+ * above for q >= 0: its third derivative is negative), f >= 0.7499 f(ud) /
+ * (1 + 3 |g| h / V^2 + 1.5 g^2 h^2 / V^4) = fm, positive for every h.
+ * (Until 2026-12-01 the bound was 1 - 3q/2, which is below this one and
+ * negative where h is comparable with V^2: the certificate refused every
+ * such ud, near |g| = 1 and u = 1.)  The residual r = S (F_g(ud)
  * - xi) and fs = S f(ud) V^2 (mist__draine_res); |r| is taken as at most
  * |r~| + 2^-46 sc, 16x its measured rounding error (4x the bound); the test
- * multiplied by V^2 twice (no division), with k = 0.7 in place of 0.7499:
+ * multiplied by V^4 (no division), with k = 0.7 in place of 0.7499:
  * the margin covers the few roundings of fs and V^2 (the test's negative
  * control passes a looser k).  This replaced the signs of two residuals at
  * the midpoints (the same answers where both accept: both are the root
@@ -2064,7 +2074,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     uint32_t b, bi, bo;
     int in;
     memcpy(&b, &uf, sizeof b);
-    in = (b & 0x7fffffffu) - 1u < 0x3f7fffffu;        /* not 0, +-1, NaN or beyond */
+    in = ((b & 0x7fffffffu) - 1u < 0x3f800000u)       /* not 0, NaN or beyond +-1 */
+         & (MIST__WFN(mist__abs)(ud) < 1);
     bi = b - 1u; bo = b + 1u;                  /* the neighbours towards 0, away */
     memcpy(&fi, &bi, sizeof fi);
     memcpy(&fo, &bo, sizeof fo);
@@ -2075,7 +2086,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     v2 = MIST__WFN(mist__v2)((MIST__W)g, ud);
     ag = MIST__WFN(mist__abs)((MIST__W)g);
     ar = MIST__WFN(mist__abs)(r);
-    return ((ar + mg * sc) * (v2 * v2) < k * h * fs * (v2 - 3 * ag * h))
+    return ((ar + mg * sc) * (v2 * (v2 + 3 * ag * h) + (MIST__W)1.5 * (ag * h) * (ag * h))
+            < k * h * fs * v2)
          & (aw <= 2097152) & in;                          /* 2^21; no branch */
 }
 

@@ -634,34 +634,41 @@ static void test_cbrt(void)
  * its first try, mist__draine_try6f): it must accept a double ud only where
  * ud rounds to the root correctly rounded to float, and the try must return
  * only that.  Random |g| log-spaced in [1e-3, 0.9999] (a fifth within
- * 1e-4..1e-1 of 1), either sign; alpha log-uniform in [1e-6, 1e4] (the
- * try's domain); xi uniform and crowded towards 0 and 1; u* in __float128
- * (tests/mist_ref.h).  Offered: u* in double (must be accepted, but for
- * the few u* within the certificate's margin of a midpoint: the floor is
- * 90%; all 17848 measured here), and ud that round to a float neighbour of the
- * correctly rounded root: the neighbours themselves and the first doubles
- * beyond either midpoint (never accepted).  Negative control: the same
- * certificate with k = 4 instead of 0.7 (it then takes any ud within ~4h
- * of u*) must accept neighbours. */
+ * 1e-4..1e-1 of 1, and every fifth draw within 1e-4..1e-3 of 1, where
+ * many roots round to +-1), either sign; alpha log-uniform in [1e-6, 1e4]
+ * (the try's domain); xi uniform and crowded towards 0 and 1; u* in
+ * __float128 (tests/mist_ref.h).  Offered: u* in double (must be accepted,
+ * but for the few u* within the certificate's margin of a midpoint: the
+ * floor is 90%, also of the roots that round to +-1), and ud that round
+ * to a float neighbour of the correctly rounded root: the neighbours
+ * themselves and the first doubles beyond either midpoint (never
+ * accepted; next to +-1 the neighbour beyond is outside [-1, 1], and for
+ * the float below 1 the first double beyond its upper midpoint rounds to
+ * 1).  Negative control: the same certificate with k = 4 instead of 0.7
+ * (it then takes any ud within ~4h of u*) must accept neighbours. */
 static void test_cert(void)
 {
     mt_rng r = { 505 };
     long n = mt_scale(20000, 2000), i, valid = 0, acc = 0, wrong = 0, tried = 0, off = 0;
-    long wrong_ctl = 0;
+    long wrong_ctl = 0, valid1 = 0, acc1 = 0;
     for (i = 0; i < n; ++i) {
         double t = mt_uniform(&r), x = mt_uniform(&r), ud, st, c[4];
         float g = (float)(mt_uniform(&r) < 0.2 ? 1 - pow(10, -1 - 3 * t) : pow(10, -3 * t));
         float a = (float)pow(10, -6 + 10 * mt_uniform(&r)), xi, rn, u, lo, hi;
         int j;
         qreal q;
+        if (i % 5 == 4) g = (float)(1 - pow(10, -3 - t));
         g = g > 0.9999f ? 0.9999f : g;
         g = i % 2 ? -g : g;
         xi = (float)(i % 3 == 1 ? pow(x, 8) : i % 3 == 2 ? 1 - pow(x, 8) : x);
         q = ref_sample(g, a, xi);
         rn = (float)q; ud = (double)q;
-        if (!(rn > -1 && rn < 1 && rn != 0) || (float)ud != rn) continue;   /* (a double rounding) */
+        /* (the certificate's domain 0 < |ud| < 1; and no double rounding) */
+        if (!(ud > -1 && ud < 1 && rn != 0) || (float)ud != rn) continue;
         ++valid;
-        acc += mist__draine_certf(g, a, xi, ud, 0.7);
+        j = mist__draine_certf(g, a, xi, ud, 0.7);
+        acc += j;
+        if (rn == 1 || rn == -1) { ++valid1; acc1 += j; }
         lo = nextafterf(rn, -2); hi = nextafterf(rn, 2);
         c[0] = lo; c[1] = hi;
         c[2] = nextafter(0.5 * ((double)lo + rn), -2);
@@ -677,11 +684,14 @@ static void test_cert(void)
              "not it", wrong, 4 * valid, off, tried);
     mt_check(10 * acc >= 9 * valid, "float Draine certificate accepts %ld of %ld roots in "
              "double (floor: 90%%)", acc, valid);
+    mt_check(valid1 >= n / 100 && 10 * acc1 >= 9 * valid1, "float Draine certificate accepts "
+             "%ld of %ld roots that round to +-1 (floor: 90%%, and at least %ld offered)",
+             acc1, valid1, n / 100);
     mt_check(wrong_ctl > 0, "control: the certificate with k = 4 must accept neighbours (%ld)",
              wrong_ctl);
-    printf("test_accuracy: float Draine certificate: %ld of %ld roots accepted, %ld of %ld "
-           "neighbours; control %ld; first tries %ld\n", acc, valid, wrong, 4 * valid,
-           wrong_ctl, tried);
+    printf("test_accuracy: float Draine certificate: %ld of %ld roots accepted (%ld of %ld "
+           "that round to +-1), %ld of %ld neighbours; control %ld; first tries %ld\n", acc,
+           valid, acc1, valid1, wrong, 4 * valid, wrong_ctl, tried);
 }
 
 /* The fog mixture (mist_fog_sample, and prepared): one xi picks the lobe
