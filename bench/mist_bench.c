@@ -602,10 +602,10 @@ static void batch_rows(void)
     row_speedup("mist_hg_sample_n (no fma: Dekker's, a loop)", n_hg_sample_nold, b_hg_sample_nold);
     row_speedup("mist_draine_eval_nf (g .5, a 17)", n_draine_evalf, b_draine_evalf);
     row_speedup("mist_draine_eval_n  (g .5, a 17)", n_draine_eval, b_draine_eval);
-    row_speedup(mist__draine_vnf(0.5f, 17.f) ? "mist_draine_sample_nf (.5, 17: eq. 6 kernel)"
+    row_speedup(mist__draine_vnf(0.5f, 17.f, N) ? "mist_draine_sample_nf (.5, 17: eq. 6 kernel)"
                 : "mist_draine_sample_nf (.5, 17: prepares once)", n_draine_samplef,
                 b_draine_samplef);
-    row_speedup(mist__draine_vn(0.5, 17.) ? "mist_draine_sample_n  (.5, 17: eq. 6 kernel)"
+    row_speedup(mist__draine_vn(0.5, 17., N) ? "mist_draine_sample_n  (.5, 17: eq. 6 kernel)"
                 : "mist_draine_sample_n  (.5, 17: prepares once)", n_draine_sample,
                 b_draine_sample);
     row_speedup("mist_draine_sample_nf (.5, 17, n = 64 each)", n_draine_samplef_64,

@@ -92,8 +92,9 @@
  *                 double").
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
- *                 where their eq. 6 kernel does not apply (see BATCH
- *                 FORMS); 1: always, (size_t)-1: never.
+ *                 where their eq. 6 kernel does not apply or leaves many
+ *                 elements to the scalar function (see BATCH FORMS); 1:
+ *                 always, (size_t)-1: never.
  *
  *   Leave out what a scene does not need (as stb's STBI_NO_*): each macro
  *   removes whole sections, so they are not even compiled, and the names
@@ -144,8 +145,10 @@
  *   1e4) where sqrt vectorises (no errno), in float, and in double where
  *   fma is one instruction, run the scalar sampler's first try over a
  *   block (eq. 6 in double, then its certificate or one compensated Newton
- *   step), at every n and without preparing; the few elements it leaves
- *   take the scalar function.  Elsewhere they are a loop below
+ *   step), without preparing; the few elements it leaves take the scalar
+ *   function.  From MIST_DRAINE_PREPARE_N elements on it is taken only
+ *   where it leaves few (|g| >= 0.01 and alpha <= 300, or |g| >= 0.5:
+ *   mist__draine_vn).  Elsewhere they are a loop below
  *   MIST_DRAINE_PREPARE_N (1024) elements; from there on they prepare the
  *   medium once and return the prepared sampler's values (the one
  *   exception to "bit for bit": the same bar, monotone in xi, but the
@@ -2194,9 +2197,10 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
  * which mist__draine_solve takes from eq. 6's answer); the elements it does
  * not settle (the certificate fails, or the step does not settle: 0-4%)
  * take the scalar function.  So every value is mist_draine_sample's, bit
- * for bit, at every n, with no preparation (this replaced preparing the
- * medium from 1024 elements on within eq. 6's domain, which gave the
- * prepared sampler's values; see "Batch forms" in README.md).  A prepared
+ * for bit, with no preparation (this replaced preparing the medium from
+ * 1024 elements on within eq. 6's domain, which gave the prepared
+ * sampler's values; see "Batch forms" in README.md; from 1024 elements on
+ * it is taken where it leaves few elements: mist__draine_vn).  A prepared
  * medium's start table takes its 129 nodes from it too: the same nodes,
  * and preparing costs a quarter of what it did (README.md, "Prepared phase
  * functions"). */
@@ -2204,15 +2208,37 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
     && (defined(MIST__W_EXACT) || defined(MIST__DDV))
 #  define MIST__DRAINE_V 1
 #endif
-/* 1 where mist_draine_sample_n takes that kernel (eq. 6's domain, after
- * sanitising; a prepared medium's table too) */
-MIST__F int MIST__FN(mist__draine_vn)(MIST__T g, MIST__T alpha)
+/* 1 where mist_draine_sample_n of n elements takes that kernel: eq. 6's
+ * domain, after sanitising (a prepared medium's table too, n = 129); from
+ * MIST_DRAINE_PREPARE_N elements on, where that batch can be prepared
+ * instead, only where the kernel settles enough elements to stay near the
+ * prepared batch's cost: |g| >= 0.01 and alpha <= 300, or |g| >= 0.5.
+ * Elsewhere in eq. 6's domain eq. 6 is too far off for the float
+ * certificate or the double step (its terms cancel as 1/g^3; and at large
+ * alpha many roots lie near u = 0, where the float spacing is fine):
+ * kernel / prepared batch with its preparation, ns an element at n = 4096
+ * (gcc 12 -O3 -march=native -fno-math-errno, AMD EPYC, 2026-12-01, a
+ * one-off harness): float g 1e-3, alpha 1: 95 / 9.2; g 3e-3, alpha 10:
+ * 48 / 7.5; g 0.1, alpha 1e4: 43 / 10; double 211 / 18, 138 / 17, 84 / 22;
+ * inside the rule at most 1.7x (float g 0.01, alpha 10: 10.8 / 6.5; double
+ * g 0.5, alpha 1e4: 30 / 20), and the kernel's values are the scalar
+ * function's bit for bit.  Below MIST_DRAINE_PREPARE_N the kernel is
+ * taken on the whole domain: in batches of 64 it is at worst ~1.1x a loop
+ * of scalar calls (g 1e-3, alpha >= 10), and 2-8x faster elsewhere. */
+MIST__F int MIST__FN(mist__draine_vn)(MIST__T g, MIST__T alpha, size_t n)
 {
 #if defined(MIST__DRAINE_V)
-    return MIST__FN(mist__draine_ok6)(MIST__FN(mist__g)(g), alpha > MIST__C(0) ? alpha
-                                                                           : MIST__C(0));
+    MIST__T gs = MIST__FN(mist__g)(g), as = alpha > MIST__C(0) ? alpha : MIST__C(0);
+    MIST__T ag = MIST__FN(mist__abs)(gs);
+    if (!MIST__FN(mist__draine_ok6)(gs, as)) return 0;
+#if !defined(MIST_NO_FOG)
+    if (n >= (size_t)MIST_DRAINE_PREPARE_N)
+        return (ag >= MIST__C(0.01) && as <= MIST__C(300)) || ag >= MIST__C(0.5);
+#endif
+    (void)n; (void)ag;
+    return 1;
 #else
-    (void)g; (void)alpha;
+    (void)g; (void)alpha; (void)n;
     return 0;
 #endif
 }
@@ -2456,7 +2482,8 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
      * 2 cn V^3 / ((1-g^2)(c0 + c1 u^2) K), limited to 3x the neighbouring
      * secants (finite where the density is 0, and a monotone interpolant) */
 #if defined(MIST__DRAINE_V)
-    if (p.w > MIST__C(0) && MIST__FN(mist__draine_vn)(p.g, p.alpha)) {  /* the batch kernel: */
+    if (p.w > MIST__C(0)
+        && MIST__FN(mist__draine_vn)(p.g, p.alpha, (size_t)MIST__PHASE_K + 1)) {  /* the kernel: */
         MIST__T xs[MIST__PHASE_K + 1];                 /* the same nodes, 4-5x faster */
         for (i = 0; i <= MIST__PHASE_K; ++i) xs[i] = (MIST__T)i / MIST__PHASE_K;
         MIST__FN(mist__draine_vk)(p.g, p.alpha, c0, c1, p.f0, xs, p.tab,
@@ -2935,8 +2962,8 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                                            MIST__T *out, size_t n);
 #endif
 
-/* Draine sample of each in[i] = xi.  Where the kernel above applies, the
- * scalar values at every n.  Elsewhere: below MIST_DRAINE_PREPARE_N
+/* Draine sample of each in[i] = xi.  Where the kernel above applies
+ * (mist__draine_vn), the scalar values.  Elsewhere: below MIST_DRAINE_PREPARE_N
  * elements a loop over mist_draine_sample; from there on the batch is one
  * medium, so it is prepared once (mist_phase_draine: the cost of ~130-140
  * samples) and sampled by mist_phase_sample_n: the prepared sampler's
@@ -2950,7 +2977,7 @@ MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST
 {
     size_t i;
 #if defined(MIST__DRAINE_V)
-    if (MIST__FN(mist__draine_vn)(g, alpha)) {
+    if (MIST__FN(mist__draine_vn)(g, alpha, n)) {
         MIST__T c0, c1;
         MIST__FN(mist__draine_c)(alpha, &c0, &c1);
         MIST__FN(mist__draine_vk)(MIST__FN(mist__g)(g), alpha, c0, c1, MIST__NULL, in, out, n);
@@ -3120,7 +3147,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         MIST__W gw = (MIST__W)p->g, fin = p->alpha < (MIST__T)INFINITY ? 1 : 0;
         if (MIST__FN(mist__phase_near1)(p->g)) {    /* as unprepared: the kernel */
 #if defined(MIST__DRAINE_V)
-            if (MIST__FN(mist__draine_vn)(p->g, p->alpha)) {
+            if (MIST__FN(mist__draine_vn)(p->g, p->alpha, n)) {
                 MIST__FN(mist__draine_vk)(p->g, p->alpha, p->c0, p->c1, MIST__NULL, in, out, n);
                 return;
             }

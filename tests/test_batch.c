@@ -16,8 +16,8 @@
  * 1, 15, 16, 17, 31, 32, 33 (the block is 32), 100, 1023, 1024 (from
  * MIST_DRAINE_PREPARE_N = 1024 on, the unprepared Draine batch sampler is
  * the prepared one's, compared with mist_phase_sample, except where its
- * eq. 6 kernel applies, mist__draine_vn: there the scalar function's at
- * every n) and 1100; in place; and no element past n is written.  Built twice by CMake: with the project's
+ * eq. 6 kernel applies, mist__draine_vn(g, alpha, n): there the scalar
+ * function's) and 1100; in place; and no element past n is written.  Built twice by CMake: with the project's
  * flags and with -march=native -fno-math-errno (so that the vectorised
  * code is what is compared).  The comparison is by bits (a -0 for a +0 or
  * a different NaN would fail); a negative control checks that it sees a
@@ -66,11 +66,14 @@
 #define DR_BAR (FMA_ULPS > 0)
 
 /* (eq. 6's domain, where the unprepared Draine batch has its kernel: 1e-3
- * <= |g| <= 0.9999, 1e-6 <= alpha <= 1e4; its edges and either side) */
+ * <= |g| <= 0.9999, 1e-6 <= alpha <= 1e4; its edges and either side; and
+ * either side of where the kernel is taken from MIST_DRAINE_PREPARE_N on:
+ * |g| >= 0.01 and alpha <= 300, or |g| >= 0.5) */
 static const double g_list[] = { 0, 0.3, -0.3, 0.8, -0.95, 0.999, -0.9999, 1e-6, -1e-6,
-                                  1e-3, -0.99991, 1, -1, 1.5, -7, NAN, INFINITY };
-static const double a_list[] = { 0, 1e-7, 1e-6, 1, 17, 250, 1e4, 10001, 1e9, INFINITY, -1,
-                                  NAN };
+                                  1e-3, -0.99991, 0.01, -0.0099, 0.5, -0.4999, 1, -1, 1.5,
+                                  -7, NAN, INFINITY };
+static const double a_list[] = { 0, 1e-7, 1e-6, 1, 17, 250, 300, 301, 1e4, 10001, 1e9,
+                                  INFINITY, -1, NAN };
 static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PREPARE_N - 1,
                               MIST_DRAINE_PREPARE_N, NMAX };
 
@@ -139,7 +142,8 @@ static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      
 /* its eq. 6 kernel's media)                                                */   \
 static T scalar_##T(int k, T g, T a, T x, int n)                                 \
 {                                                                                 \
-    if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N && !CAT(mist__draine_vn, S)(g, a)) \
+    if (k == DR_SAMPLE && n >= MIST_DRAINE_PREPARE_N                              \
+        && !CAT(mist__draine_vn, S)(g, a, (size_t)n))                             \
         k = PD_SAMPLE;                                                            \
     switch (k) {                                                                  \
     case PD_EVAL: case PF_EVAL:                                                   \
@@ -258,7 +262,7 @@ int main(void)
             double g = g_list[gi], a = a_list[ai];
             mt_check(nodes_double(g, a, 0) && nodes_float((float)g, (float)a, 0),
                      "prepared table nodes g=%g a=%g: the scalar sampler's (kernel: %d)", g, a,
-                     mist__draine_vn(g, a));
+                     mist__draine_vn(g, a, 129));
         }
     mt_check(!nodes_double(0.5, 17, 7) && !nodes_float(0.5f, 17, 7),
              "control: a node one ulp off must differ");
