@@ -159,7 +159,7 @@
  *   mist_phase_sample_n (float: _nf) equal mist_phase_eval and
  *   mist_phase_sample element by element; the Draine and Cornette-Shanks
  *   samples are vectorised in float (the start table and one straight-line
- *   Newton step a block) and in double where fma is one instruction (the
+ *   Newton step a block; at |g| >= 0.999 the unprepared kernel) and in double where fma is one instruction (the
  *   table, one step in double and one in double-double); the few elements
  *   that need more go through the scalar function.  Measured, each against
  *   a loop of scalar calls: bench/mist_bench.c (README "Batch forms").
