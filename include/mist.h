@@ -146,8 +146,9 @@
  *   0.5: mist__draine_okt) where sqrt vectorises (no errno), in float,
  *   and in double where fma is one instruction, run the scalar sampler's
  *   first try over a block (eq. 6 in double, then its certificate or one
- *   compensated Newton step), without preparing; the few elements it leaves take the scalar
- *   function.  From MIST_DRAINE_PREPARE_N elements on it is taken only
+ *   compensated Newton step), without preparing; the few elements it
+ *   leaves take the scalar function.  From MIST_DRAINE_PREPARE_N elements
+ *   on it is taken only
  *   where it leaves few (|g| >= 0.01 and alpha <= 300, or |g| >= 0.5:
  *   mist__draine_vn).  Elsewhere they are a loop below
  *   MIST_DRAINE_PREPARE_N (1024) elements; from there on they prepare the
@@ -159,8 +160,9 @@
  *   mist_phase_sample_n (float: _nf) equal mist_phase_eval and
  *   mist_phase_sample element by element; the Draine and Cornette-Shanks
  *   samples are vectorised in float (the start table and one straight-line
- *   Newton step a block; at |g| >= 0.999 the unprepared kernel) and in double where fma is one instruction (the
- *   table, one step in double and one in double-double); the few elements
+ *   Newton step a block; at |g| >= 0.999 the unprepared kernel) and in
+ *   double where fma is one instruction (the table, one step in double and
+ *   one in double-double); the few elements
  *   that need more go through the scalar function.  Measured, each against
  *   a loop of scalar calls: bench/mist_bench.c (README "Batch forms").
  *
@@ -2618,14 +2620,16 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
 
 #if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
 /* float: 1 where a prepared Draine lobe samples as the unprepared sampler
- * (|g| >= 0.999; no start table): there the table's float nodes hold 1 - u
- * (~1e-6 of the HG-like lobe's mass near u = 1 at g 0.999) only to a few
- * percent, and from their start both straight-line steps missed their
- * bound for 59% of xi (g 0.999, alpha 17, a one-off count): 62-69 ns a
- * sample in the batch, where the unprepared batch kernel takes 10, and one
- * at a time 69 against the unprepared 68 (87 / 73 at .9995, 102 / 90 at
- * .9999; below .999 the table wins: 46 / 68 at .998).  The double lobe's
- * compensated step settles from its double table (14-17 ns a sample). */
+ * (|g| >= 0.999; its start table unused): there the table's float nodes
+ * hold 1 - u (~1e-6 at g 0.999, where most of the lobe's mass lies near
+ * u = 1) only to a few percent, and from their start both straight-line
+ * steps missed their bound for 59% of xi (g 0.999, alpha 17, a one-off
+ * count).  mist_bench, g 0.999, alpha 17: the batch 55-57 -> 7.9-8.3 ns a
+ * sample (the unprepared kernel), one at a time 63-67 -> 71-72 (the
+ * unprepared sampler; above 0.999 it is the faster one: 67 against 87 at
+ * .9995, one-off; below, the table wins: 46 against 68 at .998).  The
+ * double lobe's compensated step settles from its double table (14-17 ns
+ * a sample). */
 MIST__F int MIST__FN(mist__phase_near1)(MIST__T g)
 {
     return MIST__FN(mist__abs)(g) >= MIST__C(0.999);
