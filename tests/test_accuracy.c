@@ -633,8 +633,8 @@ static void test_cbrt(void)
 /* The unprepared float Draine sampler's certificate (mist__draine_certf;
  * its first try, mist__draine_try6f): it must accept a double ud only where
  * ud rounds to the root correctly rounded to float, and the try must return
- * only that.  Random |g| log-spaced in [1e-3, 0.99999] (a fifth within
- * 1e-4..1e-1 of 1, and every fifth draw within 1e-5..1e-3 of 1, where
+ * only that.  Random |g| log-spaced in [1e-3, 0.999999] (a fifth within
+ * 1e-4..1e-1 of 1, and every fifth draw within 1e-6..1e-3 of 1, where
  * many roots round to +-1), either sign; alpha log-uniform in [1e-6, 1e4],
  * and for every fourth draw with |g| >= 0.5 in [1e4, 2^21] (the float
  * try's domain, mist__draine_oktf); xi uniform and crowded towards 0 and 1; u* in
@@ -658,8 +658,8 @@ static void test_cert(void)
         float a = (float)pow(10, -6 + 10 * mt_uniform(&r)), xi, rn, u, lo, hi;
         int j;
         qreal q;
-        if (i % 5 == 4) g = (float)(1 - pow(10, -3 - 2 * t));
-        g = g > 0.99999f ? 0.99999f : g;
+        if (i % 5 == 4) g = (float)(1 - pow(10, -3 - 3 * t));
+        g = g > 0.999999f ? 0.999999f : g;
         if (i % 4 == 3 && g >= 0.5f) a = (float)pow(2, 13.3 + 7.7 * mt_uniform(&r));  /* to 2^21 */
         g = i % 2 ? -g : g;
         xi = (float)(i % 3 == 1 ? pow(x, 8) : i % 3 == 2 ? 1 - pow(x, 8) : x);
