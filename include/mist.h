@@ -2631,8 +2631,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
  * hold 1 - u (~1e-6 at g 0.999, where most of the lobe's mass lies near
  * u = 1) only to a few percent, and from their start both straight-line
  * steps missed their bound for 59% of xi (g 0.999, alpha 17, a one-off
- * count).  mist_bench, g 0.999, alpha 17: the batch 55-57 -> 7.9-8.3 ns a
- * sample (the unprepared kernel), one at a time 63-67 -> 71-72 (the
+ * count).  mist_bench, g 0.999, alpha 17: the batch 55-57 -> 7.9-8.7 ns a
+ * sample (the unprepared kernel), one at a time 63-67 -> 71-85 (the
  * unprepared sampler; above 0.999 it is the faster one: 67 against 87 at
  * .9995, one-off; below, the table wins: 46 against 68 at .998).  The
  * double lobe's compensated step settles from its double table (14-17 ns
