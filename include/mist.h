@@ -148,7 +148,7 @@
  *   everywhere, HG where fma is one instruction (FP_FAST_FMA; else a plain
  *   loop, which was faster).  The unprepared Draine samplers, for media in
  *   the domain of [JD23] eq. 6 (1e-3 <= |g| <= 0.9999, 1e-6 <= alpha <=
- *   1e4; in float |g| up to 0.999999, and alpha up to 2^21 where |g| >=
+ *   1e4; in float |g| up to 0.999999, and alpha up to 1e30 where |g| >=
  *   0.5: mist__draine_okt) where sqrt vectorises (no errno), in float,
  *   and in double where fma is one instruction, run the scalar sampler's
  *   first try over a block (eq. 6 in double, then its certificate or one
@@ -1894,26 +1894,26 @@ MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
  * batch kernel runs): double, eq. 6's domain above, where its one
  * compensated step settles from that start; float, wider: the certificate
  * (mist__draine_cert) proves each answer it accepts for any |g| < 1 and
- * alpha in (0, 2^21], and there eq. 6 in double is good enough for it to
+ * finite alpha > 0, and there eq. 6 in double is good enough for it to
  * accept all of 2e4 random xi at each of |g| 0.999 ... 1 - 25 2^-24 and
- * alpha 1e-12 ... 2e6 (97% at 1 - 20 2^-24, 88.6% at 1 - 17 2^-24 =
+ * alpha 1e-12 ... 1e20 (97% at 1 - 20 2^-24, 88.6% at 1 - 17 2^-24 =
  * 0.999998987, 12% at 1 - 2 2^-24), 99.5-100% at |g| 1e-3 ... 0.5 and
  * alpha 1e-12 ... 1e-6, 91-99.9% at |g| 0.5 ... 0.99 and alpha 1e4 ...
- * 2e6, against 0-25% at alpha 1e-30 and 4-61% at |g| 1e-3 ... 0.1 and
- * alpha 1e5 ... 2e6 (a one-off count, 2026-12-01).  So the float try's
- * domain is 1e-3 <= |g| <= 0.999999 with 1e-6 <= alpha <= 1e4, and
- * up to alpha 2^21 where |g| >= 0.5 (outside eq. 6's domain a refused
- * answer's fallback starts from the HG answer, as before).  There the
- * float samplers took 70-140 ns a sample, scalar and batch alike (now ~70
- * scalar, ~9 in the batch kernel).  Not below alpha 1e-6, where the HG
- * answer is a start the solver finishes in one step, faster than eq. 6
- * (38-54 against 64-71 ns one at a time, measured). */
+ * 1e20 (flat in alpha beyond 1e5), against 0-25% at alpha 1e-30 and 49-81%
+ * at |g| 0.01 ... 0.3 and alpha 1e5 ... 1e20 (a one-off count, 2026-12-01).
+ * So the float try's domain is 1e-3 <= |g| <= 0.999999 with 1e-6 <=
+ * alpha <= 1e4, and up to alpha 1e30 where |g| >= 0.5 (outside eq. 6's
+ * domain a refused answer's fallback starts from the HG answer, as
+ * before).  There the float samplers took 70-140 ns a sample, scalar and
+ * batch alike (now ~70 scalar, ~9 in the batch kernel).  Not below alpha
+ * 1e-6, where the HG answer is a start the solver finishes in one step,
+ * faster than eq. 6 (38-54 against 64-71 ns one at a time, measured). */
 MIST__F int MIST__FN(mist__draine_okt)(MIST__T g, MIST__T alpha)
 {
     MIST__T ag = MIST__FN(mist__abs)(g);
     if (MIST__DBL) return MIST__FN(mist__draine_ok6)(g, alpha);
     return ag >= MIST__C(1e-3) && ag <= MIST__C(0.999999) && alpha >= MIST__C(1e-6)
-           && alpha <= (ag >= MIST__C(0.5) ? MIST__C(2097152) : MIST__C(1e4));
+           && alpha <= (ag >= MIST__C(0.5) ? MIST__C(1e30) : MIST__C(1e4));
 }
 
 /* u in [-1, 1] with F_g(u) = x, for x in [0, 1/2], g in (-1, 1); c0, c1:
@@ -2073,8 +2073,9 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
 
 /* The float Draine samplers' certificate: 1 where ud (0 < |ud| < 1, a W)
  * rounded to float is the root u* of F_g(u) = xi correctly rounded, as one
- * residual at ud proves (sanitised |g| < 1, alpha in (0, 2^21], xi in
- * [0, 1]); else 0 (also where ud rounds to 0, or is NaN).  Let h be
+ * residual at ud proves (sanitised |g| < 1, alpha > 0 finite, xi in
+ * [0, 1]); else 0 (also where ud rounds to 0 or to a subnormal, or is
+ * NaN).  Let h be
  * the distance from ud to the nearer of the midpoints between its rounding
  * uf and uf's two float neighbours (exact: Sterbenz; h <= 2^-25, half the
  * float spacing below 1).  Where uf = +-1 (|ud| < 1) that is the midpoint
@@ -2085,19 +2086,23 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
  * a one-off count).  If f = F_g' >= fm on [ud - h, ud + h], then
  * |F_g(ud) - xi| < h fm puts F_g(ud - h) < xi < F_g(ud + h): u* lies within
  * h of ud, so on uf's side of both midpoints.  fm: f = (1 - g^2) w V^-3 /
- * (2 cn) with w = 1 + alpha u^2 >= 1; over the interval w moves by at most
- * 2 alpha (|ud| + h) h <= 1/4 (1 + 2^-25) (alpha <= 2^21) and V^2 by at
+ * (2 cn) with w = 1 + alpha u^2; over the interval w is least where |u|
+ * is, and |u| >= |ud| - h >= (1 - 2^-24) |ud| (for normal uf, h is at most
+ * half its float spacing, 2^-24 |uf|), so w >= (1 - 2^-24)^2 w(ud) for any
+ * alpha (until 2026-12-01 the bound was 0.75 w(ud), from w's change 2
+ * alpha (|ud| + h) h <= 1/4, which needed alpha <= 2^21); V^2 moves by at
  * most 2 |g| h, so with q = 2 |g| h / V^2(ud) and (1 + q)^-3/2 >=
  * 1 / (1 + 3q/2 + 3q^2/8) (the Taylor polynomial of (1 + q)^3/2 bounds it
- * above for q >= 0: its third derivative is negative), f >= 0.7499 f(ud) /
- * (1 + 3 |g| h / V^2 + 1.5 g^2 h^2 / V^4) = fm, positive for every h.
- * (Until 2026-12-01 the bound was 1 - 3q/2, which is below this one and
- * negative where h is comparable with V^2: the certificate refused every
- * such ud, near |g| = 1 and u = 1.)  The residual r = S (F_g(ud)
+ * above for q >= 0: its third derivative is negative), f >= 0.9999998
+ * f(ud) / (1 + 3 |g| h / V^2 + 1.5 g^2 h^2 / V^4) = fm, positive for every
+ * h.  (Until 2026-12-01 the V^2 factor was 1 - 3q/2, which is below this
+ * one and negative where h is comparable with V^2: the certificate refused
+ * every such ud, near |g| = 1 and u = 1.)  The residual r = S (F_g(ud)
  * - xi) and fs = S f(ud) V^2 (mist__draine_res); |r| is taken as at most
  * |r~| + 2^-46 sc, 16x its measured rounding error (4x the bound); the test
- * multiplied by V^4 (no division), with k = 0.7 in place of 0.7499:
- * the margin covers the few roundings of fs and V^2 (the test's negative
+ * multiplied by V^4 (no division), with k = 0.7 in place of 0.9999998 (it
+ * was 0.7 against 0.7499: the same answers where alpha <= 2^21): the
+ * margin covers the few roundings of fs and V^2 (the test's negative
  * control passes a looser k).  This replaced the signs of two residuals at
  * the midpoints (the same answers where both accept: both are the root
  * correctly rounded); one residual's instructions instead of two waiting
@@ -2113,6 +2118,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     int in;
     memcpy(&b, &uf, sizeof b);
     in = ((b & 0x7fffffffu) - 1u < 0x3f800000u)       /* not 0, NaN or beyond +-1 */
+         & ((b & 0x7f800000u) != 0u)                  /* nor subnormal */
          & (MIST__WFN(mist__abs)(ud) < 1);
     bi = b - 1u; bo = b + 1u;                  /* the neighbours towards 0, away */
     memcpy(&fi, &bi, sizeof fi);
@@ -2125,8 +2131,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST
     ag = MIST__WFN(mist__abs)((MIST__W)g);
     ar = MIST__WFN(mist__abs)(r);
     return ((ar + mg * sc) * (v2 * (v2 + 3 * ag * h) + (MIST__W)1.5 * (ag * h) * (ag * h))
-            < k * h * fs * v2)
-         & (aw <= 2097152) & in;                          /* 2^21; no branch */
+            < k * h * fs * v2) & in;                                  /* no branch */
 }
 
 /* The unprepared float sampler's first try at sanitised |g| < 1, alpha, xi
