@@ -691,6 +691,18 @@ static void test_cert(void)
              acc1, valid1, n / 100);
     mt_check(wrong_ctl > 0, "control: the certificate with k = 4 must accept neighbours (%ld)",
              wrong_ctl);
+    /* the float try's domain edges (mist__draine_oktf), each side */
+    mt_check(mist__draine_oktf(1e-3f, 1e-6f) && !mist__draine_oktf(nextafterf(1e-3f, 0), 1)
+             && !mist__draine_oktf(0.3f, nextafterf(1e-6f, 0))
+             && mist__draine_oktf(-0.999999f, 1e4f)
+             && !mist__draine_oktf(nextafterf(0.999999f, 1), 1)
+             && mist__draine_oktf(0.4999f, 1e4f)
+             && !mist__draine_oktf(0.4999f, nextafterf(1e4f, 1e5f))
+             && mist__draine_oktf(-0.5f, 1e30f)
+             && !mist__draine_oktf(0.5f, nextafterf(1e30f, 1e31f))
+             && !mist__draine_oktf(0.9f, (float)INFINITY),
+             "the float first try's domain: 1e-3 <= |g| <= 0.999999, 1e-6 <= alpha <= 1e4, "
+             "and to 1e30 where |g| >= 0.5");
     printf("test_accuracy: float Draine certificate: %ld of %ld roots accepted (%ld of %ld "
            "that round to +-1), %ld of %ld neighbours; control %ld; first tries %ld\n", acc,
            valid, acc1, valid1, wrong, 4 * valid, wrong_ctl, tried);

@@ -66,14 +66,16 @@
 #define DR_BAR (FMA_ULPS > 0)
 
 /* (eq. 6's domain, where the unprepared Draine batch has its kernel: 1e-3
- * <= |g| <= 0.9999, 1e-6 <= alpha <= 1e4; its edges and either side; and
- * either side of where the kernel is taken from MIST_DRAINE_PREPARE_N on:
- * |g| >= 0.01 and alpha <= 300, or |g| >= 0.5) */
+ * <= |g| <= 0.9999, 1e-6 <= alpha <= 1e4; its edges and either side; in
+ * float also |g| <= 0.999999 and, where |g| >= 0.5, alpha <= 1e30
+ * (mist__draine_okt): those edges, 0.999999046 the float above 0.999999;
+ * and either side of where the kernel is taken from MIST_DRAINE_PREPARE_N
+ * on: |g| >= 0.01 and alpha <= 300, or |g| >= 0.5) */
 static const double g_list[] = { 0, 0.3, -0.3, 0.8, -0.95, 0.999, -0.9999, 1e-6, -1e-6,
-                                  1e-3, -0.99991, 0.01, -0.0099, 0.5, -0.4999, 1, -1, 1.5,
-                                  -7, NAN, INFINITY };
+                                  1e-3, -0.99991, 0.999999, -0.99999904632568359375, 0.01,
+                                  -0.0099, 0.5, -0.4999, 1, -1, 1.5, -7, NAN, INFINITY };
 static const double a_list[] = { 0, 1e-7, 1e-6, 1, 17, 250, 300, 301, 1e4, 10001, 1e9,
-                                  INFINITY, -1, NAN };
+                                  1e30, 2e30, INFINITY, -1, NAN };
 static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PREPARE_N - 1,
                               MIST_DRAINE_PREPARE_N, NMAX };
 

@@ -12,7 +12,7 @@ printf '%s\n' '#include <math.h>' '#include <float.h>' '#include <stddef.h>' \
     '#include <stdint.h>' '#include <string.h>' \
     'int main(void) { return FLT_EVAL_METHOD != 2 || sqrt(4.0) != 2.0; }' > "$out.probe.c"
 if ! gcc -m32 -c "$out.probe.c" -o "$out.probe.o" >/dev/null 2>&1; then
-    echo "gcc -m32 cannot build against the C library's headers (no 32-bit multilib, libc6-dev-i386): test skipped"
+    echo "gcc -m32 cannot build against the C headers (no libc6-dev-i386): test skipped"
     exit 77
 fi
 w="-std=c99 -Wall -Wextra -Wpedantic -Werror -I$inc -I$dir -c $dir/compile_c.c -o $out.o"
