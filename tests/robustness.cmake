@@ -20,7 +20,10 @@
 # and compile tests of these sources under gcc and clang, as CMakeLists.txt
 # does for the others.
 option(MIST_VARIANTS "Test sub-builds of mist under sanitizers and other compiler flags" ON)
-set(MIST_FUZZ_SECONDS 10 CACHE STRING "Seconds each libFuzzer test runs")
+# 5 s a harness (10 until 2026-12-01: CI's time; 10 s ran ~17000 inputs of
+# fuzz_phase and ~19000 of fuzz_hfog under ASan here, a one-off count; the
+# long runs of fuzz/README.md are where fuzzing finds things)
+set(MIST_FUZZ_SECONDS 5 CACHE STRING "Seconds each libFuzzer test runs")
 
 set(_src ${CMAKE_CURRENT_SOURCE_DIR})
 
@@ -68,25 +71,33 @@ endforeach()
 #
 # Issue 6: "the whole test suite also runs under ASan/UBSan, -ffast-math,
 # -O0, -O3, and without FMA contraction".  CI runs the README's test
-# command on 2 cores in ~4 minutes with these, so the default list is three
-# variants that, with the main build, cover the five (CPU seconds measured
-# with gcc 12 on this project's 2-core machine).  The whole ctest run takes
-# ~400 s of user CPU (404 s measured, fresh build dir, ctest -j2; before
-# the asan variant ran accuracy, chi2 and height_fog: 367 s); asan is the
-# longest job (~190 s wall of a ~400 s run on the 2 cores shared with
-# other work, load ~3):
+# command on 2 cores and should take under 5 minutes, so the default list
+# is three variants that, with the main build, cover the five.  The
+# variants are most of the suite's CPU time: 355 s of CPU for the three
+# (ctest -R '^variant_' -j2, perf stat's task-clock, 2026-12-01's AMD EPYC
+# VM) before this session's cuts, 269 s after them (MIST_VARIANT_QUICK
+# 4 -> 8; no *_native builds in asan and O3; CI had reported 287 s and
+# 353 s for the whole .ci/run).  asan is the longest job:
 #   asan      -O0 -g, AddressSanitizer + UndefinedBehaviorSanitizer: the
 #             sanitizer variant and the -O0 variant.  Every test (but the
 #             compile and consumer tests, as in every variant: their flags
-#             are their own), with MIST_TEST_QUICK=MIST_VARIANT_QUICK (4):
-#             accuracy, chi2 and height_fog draw a quarter of their random
-#             points and samples (chi2: not below half the scalar and a
-#             quarter of the direction samples, where its negative controls
-#             are still rejected, see test_chi2.c), every fixed edge case
-#             and grid in full.  Measured (CPU s under ASan, gcc 12, full
-#             size -> quick): accuracy 31 -> 12, chi2 11.6 -> 5.5,
-#             height_fog 17.7 -> 11 (its issue grids are fixed).  Stress
-#             makes 2e6 calls here.
+#             are their own; and the *_native builds, MIST_TEST_NATIVE=OFF:
+#             batch_nold is the batch forms with -march=native here, and
+#             accuracy_nold the double samplers without long double;
+#             accuracy_nold_native and batch_native had taken 31 and 21 s
+#             of the 123 s its tests ran in, and -march=native slowed
+#             ASan's quadrature 5x, see below), with
+#             MIST_TEST_QUICK=MIST_VARIANT_QUICK (8): accuracy, chi2 and
+#             height_fog draw an eighth of their random points and samples,
+#             but never below each count's floor (mt_scale's lo: chi2 keeps
+#             half the scalar and a quarter of the direction samples, where
+#             its negative controls are still rejected, see test_chi2.c),
+#             every fixed edge case and grid in full.  Measured (s under
+#             ASan, gcc 12, one at a time, quick 4 -> 8): accuracy 13.3 ->
+#             8.8, accuracy_nold 16.7 -> 9.7, height_fog 11.3 -> 10.0, chi2
+#             6.3 -> 5.9 (earlier, full size -> 4: accuracy 31 -> 12, chi2
+#             11.6 -> 5.5, height_fog 17.7 -> 11).  Stress makes 2e6 calls
+#             here.
 #   fastmath  -O2 -ffast-math.  The header guards itself
 #             (FAST MATH in include/mist.h); what -ffast-math still changes
 #             is the start-up flushing of subnormals (FTZ/DAZ), so the
@@ -96,9 +107,11 @@ endforeach()
 #             (fuzz_hfog.c reads its raw-bits "direct" records through the
 #             generators there; replayed raw, 13 of the 549 inputs failed).
 #             Not with -march=native: see FAST MATH (one bit-for-bit check
-#             of test_domain fails there).  Every test (as asan), quick 4.
+#             of test_domain fails there).  Every test, the *_native builds
+#             too (the only run of -ffast-math with FMA), quick 8.
 #   O3        -O3 -march=native -ffp-contract=fast (contraction wherever
-#             the host has FMA): every test (as asan), quick 4.
+#             the host has FMA): every test (as asan; its *_native builds
+#             would repeat its own flags), quick 8.
 # The main build runs accuracy, chi2 and height_fog at full size (no
 # MIST_TEST_QUICK): the variants check that other flags change nothing,
 # the main build carries the statistical power.
@@ -108,7 +121,7 @@ endforeach()
 # fma() on FMA hardware without contraction is nofma below, not in the
 # default list: with -march=native added to asan, quadrature took 5x longer
 # (34 s against 7 s of CPU at -O0 with ASan, measured).
-# and on request (MIST_VARIANT_LIST), every test each, MIST_TEST_QUICK=4:
+# and on request (MIST_VARIANT_LIST), every test each, MIST_TEST_QUICK=8:
 #   O0        -O0 without sanitizers
 #   nofma     -O2 -march=native -ffp-contract=off without -ffast-math
 # The main build's stress test makes the 1e8 calls; the variants' 5e6
@@ -123,24 +136,28 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
   endif()
   set(MIST_VARIANT_LIST "asan;fastmath;O3" CACHE STRING
       "The variants to test (MIST_VARIANTS): any of asan fastmath O3 O0 nofma")
-  set(MIST_VARIANT_QUICK 4 CACHE STRING
+  set(MIST_VARIANT_QUICK 8 CACHE STRING
       "MIST_TEST_QUICK for the variants' accuracy, chi2 and height_fog tests (1: full size)")
-  function(mist_variant name flags calls exclude)
+  function(mist_variant name flags calls exclude native)
     if(NOT name IN_LIST MIST_VARIANT_LIST)
       return()
     endif()
     add_test(NAME variant_${name}
              COMMAND sh ${_src}/tests/variant.sh ${name} ${_src}
                      ${CMAKE_CURRENT_BINARY_DIR}/variant-${name} ${CMAKE_C_COMPILER}
-                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" ${MIST_VARIANT_QUICK})
+                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" ${MIST_VARIANT_QUICK}
+                     ${native})
     set_tests_properties(variant_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 COST 100)
   endfunction()
-  # name, CMAKE_C_FLAGS, MIST_STRESS_CALLS, the tests left out (a regex)
-  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6 "")
-  mist_variant(fastmath "-O2 -ffast-math" 5e6 "")
-  mist_variant(O3 "-O3 ${_native} -ffp-contract=fast" 5e6 "")
-  mist_variant(O0 "-O0" 5e6 "")
-  mist_variant(nofma "-O2 ${_native} -ffp-contract=off" 5e6 "")
+  # name, CMAKE_C_FLAGS, MIST_STRESS_CALLS, the tests left out (a regex),
+  # MIST_TEST_NATIVE (the *_native builds: off where the variant's flags
+  # would make them a repeat, O3 and nofma, or where -march=native costs
+  # more than it finds, asan: see above)
+  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6 "" OFF)
+  mist_variant(fastmath "-O2 -ffast-math" 5e6 "" ON)
+  mist_variant(O3 "-O3 ${_native} -ffp-contract=fast" 5e6 "" OFF)
+  mist_variant(O0 "-O0" 5e6 "" ON)
+  mist_variant(nofma "-O2 ${_native} -ffp-contract=off" 5e6 "" OFF)
 endif()
 
 # The longest single jobs start first, beside the variants (ctest runs

@@ -1,5 +1,5 @@
 #!/bin/sh
-# variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS EXCLUDE [QUICK]
+# variant.sh NAME SRC BIN CC GENERATOR FLAGS STRESS_CALLS EXCLUDE [QUICK [NATIVE]]
 # Configures, builds and tests a sub-build of the mist tree SRC in BIN with
 # the C compiler CC, CMAKE_C_FLAGS=FLAGS (build type "Variant": no other
 # optimisation flags), MIST_ROBUSTNESS=ON (the stress and replay tests) and
@@ -10,11 +10,12 @@
 # MIST_STRESS_CALLS=STRESS_CALLS for the stress test and MIST_TEST_QUICK=QUICK
 # (default 1: full size) for test_accuracy, test_chi2 and test_height_fog
 # (tests/mist_test.h: their random draws and sample counts / QUICK, the
-# fixed edge cases and grids in full).  Exits 77 (ctest:
+# fixed edge cases and grids in full), and MIST_TEST_NATIVE=NATIVE (default
+# ON: the tests' builds with the benchmark's flags too).  Exits 77 (ctest:
 # skipped) with a message when CC cannot build and run a program with FLAGS
 # (e.g. no sanitizer runtime).
 set -u
-name=$1; src=$2; bin=$3; cc=$4; gen=$5; flags=$6; calls=$7; exclude=$8; quick=${9:-1}
+name=$1; src=$2; bin=$3; cc=$4; gen=$5; flags=$6; calls=$7; exclude=$8; quick=${9:-1}; native=${10:-ON}
 mkdir -p "$bin" || exit 1
 probe="$bin/probe.c"
 printf '%s\n' '#include <math.h>' '#include <stdio.h>' \
@@ -28,7 +29,7 @@ echo "variant $name: $cc $flags"
 t0=$(date +%s)
 cmake -S "$src" -B "$bin" -G "$gen" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Variant \
       -DCMAKE_C_FLAGS="$flags" -DMIST_BUILD_EXAMPLES=OFF -DMIST_ROBUSTNESS=ON \
-      -DMIST_VARIANTS=OFF -DMIST_FUZZ_SECONDS=0 >"$bin/configure.log" 2>&1 ||
+      -DMIST_VARIANTS=OFF -DMIST_FUZZ_SECONDS=0 -DMIST_TEST_NATIVE="$native" >"$bin/configure.log" 2>&1 ||
     { cat "$bin/configure.log"; exit 1; }
 cmake --build "$bin" -j 2 >"$bin/build.log" 2>&1 || { cat "$bin/build.log"; exit 1; }
 t1=$(date +%s)
