@@ -2649,7 +2649,9 @@ MIST__F int MIST__FN(mist__phase_near1)(MIST__T g)
 #endif
 
 /* mist_phase_sample past its HG test (p non-null, p->w > 0): Rayleigh,
- * Draine and the fog's mixture */
+ * Draine and the fog's mixture (also the Draine batch's scalar fallbacks,
+ * which need no HG test: called directly, they keep the HG sample out of
+ * the batch functions' code) */
 MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
 {
     MIST__T w;
@@ -3144,7 +3146,7 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
         bad[j] = again * (1 - ok);
     }
     for (j = 0; j < q->m; ++j)
-        out[q->at[j]] = bad[j] ? MIST__FN(mist_phase_sample)(p, xs[j]) : y[j];
+        out[q->at[j]] = bad[j] ? MIST__FN(mist__phase_sample_w)(p, xs[j]) : y[j];
     q->m = 0;
 }
 #endif
@@ -3206,7 +3208,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                 return;
             }
 #endif
-            for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_sample)(p, in[i]);
+            for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__phase_sample_w)(p, in[i]);
             return;
         }
         MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
@@ -3234,7 +3236,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             MIST__W uw = u1[j_];
             int k = MIST__FN(mist__phase_k)(xi);
             if (f_[j_] == 2 && !(uw >= (MIST__W)tab[k] && uw <= (MIST__W)tab[k + 1])) {
-                out[i_ + j_] = MIST__FN(mist_phase_sample)(p, x_[j_]);   /* no second step */
+                out[i_ + j_] = MIST__FN(mist__phase_sample_w)(p, x_[j_]);   /* no second step */
             } else {
                 q.at[q.m] = i_ + j_; q.xi[q.m] = xi; q.u[q.m] = uw; q.eb[q.m] = e1[j_];
                 q.kb[q.m] = (MIST__W)tab[2 * MIST__PHASE_K + 2 + k]; q.again[q.m] = f_[j_] == 2;
@@ -3268,7 +3270,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
             MIST__T u;                    /* the scalar sampler's finish from there */
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
             out[i_ + j_] = MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
-                           : MIST__FN(mist_phase_sample)(p, x_[j_]);)
+                           : MIST__FN(mist__phase_sample_w)(p, x_[j_]);)
 #endif
         return;
     }
