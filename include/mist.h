@@ -2707,10 +2707,23 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
  * sampler was a call per sample there, 1.77-1.98x the unprepared one
  * (mist_bench, "prepared vs unprepared", an AMD EPYC; 1.07x in a one-off
  * file that inlined it) */
+/* 1 where x > 0 (not NaN), on the bits: 1 <= bits <= those of +inf.  A
+ * floating-point !(w > 0) in this small function lost its NaN case under
+ * gcc -ffast-math, header guard or not (x86: -mno-ieee-fp for the whole
+ * file; the compare came out as 0 >= w), and a medium with w NaN (set by
+ * hand: the constructors clamp it to 0) took the Draine branch there, -1
+ * for the HG sample (found by a review's harness, 2026-12-01). */
+MIST__F MIST__HOT int MIST__FN(mist__gt0)(MIST__T x)
+{
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    return (MIST__UB)(b - 1u) < ((MIST__UB)MIST__EB << MIST__MB);
+}
+
 MIST__F MIST__API_HOT MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
     if (!p) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
-    if (!(p->w > MIST__C(0))) return MIST__FN(mist__phase_hg)(p, xi);
+    if (!MIST__FN(mist__gt0)(p->w)) return MIST__FN(mist__phase_hg)(p, xi);
     return MIST__FN(mist__phase_sample_w)(p, xi);
 }
 

@@ -145,7 +145,7 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
     add_test(NAME variant_${name}
              COMMAND sh ${_src}/tests/variant.sh ${name} ${_src}
                      ${CMAKE_CURRENT_BINARY_DIR}/variant-${name} ${CMAKE_C_COMPILER}
-                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" ${MIST_VARIANT_QUICK}
+                     ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" "${MIST_VARIANT_QUICK}"
                      ${native})
     set_tests_properties(variant_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 COST 100)
   endfunction()

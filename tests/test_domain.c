@@ -510,6 +510,31 @@ static void test_prepared(void)
                  isfinite(of.x),
                  "NULL phase: isotropic");
     }
+    /* a medium whose w was set by hand to NaN (or -0): HG, as w <= 0.  In
+     * the fast-math variant a floating-point !(w > 0) in the small
+     * mist_phase_sample took the Draine branch for NaN (gcc -ffast-math:
+     * -1 for the HG sample at xi 0.9); mist__gt0 tests the bits */
+    {
+        static const double ws[] = { 0, -0.0, -1, 0 };
+        mist_phase ph = mist_phase_hg(0.8);
+        mist_phasef phf = mist_phase_hgf(0.8f);
+        int bad = 0;
+        size_t i, j;
+        for (i = 0; i < 4; ++i) {
+            ph.w = i == 3 ? NAN : ws[i];
+            phf.w = i == 3 ? NAN : (float)ws[i];
+            for (j = 1; j < 10; j += 4) {
+                double x = 0.1 * (double)j;
+                bad += mist_phase_sample(&ph, x) != mist_hg_sample(0.8, x);
+                bad += mist_phase_samplef(&phf, (float)x) != mist_hg_samplef(0.8f, (float)x);
+            }
+        }
+        ph.w = -NAN; phf.w = -NAN;
+        bad += mist_phase_sample(&ph, 0.9) != mist_hg_sample(0.8, 0.9);
+        bad += mist_phase_samplef(&phf, 0.9f) != mist_hg_samplef(0.8f, 0.9f);
+        mt_check(bad == 0, "prepared HG with w set to 0, -0, -1, NaN, -NaN: the HG sample "
+                 "(%d wrong)", bad);
+    }
 }
 
 int main(void)
