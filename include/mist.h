@@ -2697,18 +2697,8 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
     }
 }
 
-/* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0): the exact
- * inverse CDF, as the unprepared sampler of the same kind.  HG (g
- * sanitised already): the unprepared sampler's arithmetic with the
- * medium's terms of g (mist__phase_hg), here, in a function always inlined
- * (MIST__API_HOT), the rest a call (mist__phase_sample_w).  Until
- * 2026-12-01 the whole sampler was one function, which gcc did not inline
- * in a large translation unit (its unit-growth limits): the prepared HG
- * sampler was a call per sample there, 1.77-1.98x the unprepared one
- * (mist_bench, "prepared vs unprepared", an AMD EPYC; 1.07x in a one-off
- * file that inlined it) */
 /* 1 where x > 0 (not NaN), on the bits: 1 <= bits <= those of +inf.  A
- * floating-point !(w > 0) in this small function lost its NaN case under
+ * floating-point !(w > 0) in mist_phase_sample below lost its NaN case under
  * gcc -ffast-math, header guard or not (x86: -mno-ieee-fp for the whole
  * file; the compare came out as 0 >= w), and a medium with w NaN (set by
  * hand: the constructors clamp it to 0) took the Draine branch there, -1
@@ -2720,6 +2710,16 @@ MIST__F MIST__HOT int MIST__FN(mist__gt0)(MIST__T x)
     return (MIST__UB)(b - 1u) < ((MIST__UB)MIST__EB << MIST__MB);
 }
 
+/* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0): the exact
+ * inverse CDF, as the unprepared sampler of the same kind.  HG (g
+ * sanitised already): the unprepared sampler's arithmetic with the
+ * medium's terms of g (mist__phase_hg), here, in a function always inlined
+ * (MIST__API_HOT), the rest a call (mist__phase_sample_w).  Until
+ * 2026-12-01 the whole sampler was one function, which gcc did not inline
+ * in a large translation unit (its unit-growth limits): the prepared HG
+ * sampler was a call per sample there, 1.77-1.98x the unprepared one
+ * (mist_bench, "prepared vs unprepared", an AMD EPYC; 1.07x in a one-off
+ * file that inlined it) */
 MIST__F MIST__API_HOT MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
     if (!p) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
