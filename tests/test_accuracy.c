@@ -794,6 +794,58 @@ static void test_fog(void)
            "float %.3f (control: %.2f)\n", fog_n, fog_worst[0], fog_worst[1], rb);
 }
 
+/* The reference inverse itself (tests/mist_ref.h, ref_sample_from): its
+ * root u must bracket xi, F(u - h) <= xi <= F(u + h), with h = 2^-12 of the
+ * double bar at u (what its convergence test promises), from starts at the
+ * root, one part in 1e9 off, 0, and both ends, over g up to 1 - 2^-52,
+ * alpha 0 to 1e8, xi from 1e-30 to 1 - 2^-53 (the bracket's slack: F's own
+ * rounding, <= 1e-33 + 1e-34/g^3 at |g| >= 1e-3, measured in
+ * mist_ref.h's comment, over the density: beside the residual's 2^-64 xi).
+ * Negative control: u moved by 4 bars must fail the same bracket. */
+static void test_reference(void)
+{
+    static const double gs[] = { 0, 1e-4, -2e-3, 0.3, -0.9, 0.999, -0x1.fffffp-1,
+                                 0x1.ffffffffffffep-1, -0x1.ffffffffffffep-1 };
+    static const double as[] = { 0, 1, 250, 1e8 };
+    static const double xs[] = { 1e-30, 1e-17, 1e-7, 0.25, 0.5, 0.9, 1 - 1e-9,
+                                 0x1.fffffffffffffp-1 };
+    size_t ig, ia, ix;
+    int k, bad = 0, n = 0, ctl = 0;
+    for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
+        for (ia = 0; ia < sizeof as / sizeof *as; ++ia)
+            for (ix = 0; ix < sizeof xs / sizeof *xs; ++ix) {
+                qreal g = gs[ig], a = as[ia], xi = xs[ix];
+                qreal u0 = ref_sample(g, a, xi), starts[5];
+                starts[0] = u0; starts[1] = u0 * (1 + (qreal)1e-9); starts[2] = 0;
+                starts[3] = -1; starts[4] = 1;
+                for (k = 0; k < 5; ++k) {
+                    qreal u = ref_sample_from(g, a, xi, starts[k]), p = ref_density_u(g, a, u);
+                    double ud = (double)u, ulp = nextafter(fabs(ud), INFINITY) - fabs(ud);
+                    qreal bar = 4 * (qreal)ulp + 4 * (qreal)0x1p-53 * xi / p, h = bar / 4096;
+                    qreal ag = g < 0 ? -g : g, sl = ((qreal)1e-33 + (qreal)1e-34 / (ag * ag * ag + (qreal)1e-300)) / p;
+                    int ok;
+                    if (h < sl && fabs((double)g) >= 1e-3) h = sl;
+                    ok = (u - h <= -1 || ref_cdf(g, a, u - h) <= xi) &&
+                         (u + h >= 1 || ref_cdf(g, a, u + h) >= xi);
+                    bad += !ok; ++n;
+                    if (!ok && bad <= 5)
+                        printf("reference: g=%a alpha=%g xi=%a start %d: u=%.20g not within "
+                               "2^-12 bar\n", gs[ig], as[ia], xs[ix], k, ud);
+                    /* control: 4 bars off (inside [-1, 1]) */
+                    {
+                        qreal v = u + (u > 0 ? -4 : 4) * bar;
+                        ctl += v > -1 && v < 1 && (ref_cdf(g, a, v - h) <= xi) &&
+                               (ref_cdf(g, a, v + h) >= xi);
+                    }
+                }
+            }
+    mt_check(bad == 0, "reference inverse: %d of %d roots not bracketed within 2^-12 of the bar",
+             bad, n);
+    mt_check(ctl == 0, "reference control: %d roots moved 4 bars still bracketed", ctl);
+    printf("test_accuracy: reference inverse: %d roots bracketed within 2^-12 of the bar "
+           "(control: none 4 bars off)\n", n);
+}
+
 /* The reported failures themselves (independent float128 values). */
 static void test_issue2_points(void)
 {
@@ -817,6 +869,7 @@ int main(void)
 #endif
         return 0;
     }
+    test_reference();
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(150, 10) : mt_scale(400, 20)));
     test_issue2_points();
