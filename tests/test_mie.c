@@ -733,8 +733,15 @@ static void test_quadrature(void)
     for (i = 0; i < nc; ++i) {
         mist_mie_complex m = cs[i][1] < 0 ? mist_mie_conductor()
                                           : mist_mie_cplx(cs[i][1], cs[i][2]);
-        mist_mie_sphere s = mist_mie_sphere_new(cs[i][0], m);
-        int n = s.n_terms + 2;
+        mist_mie_sphere s;
+        int n;
+        /* quick mode (MIST_TEST_QUICK, the variants) leaves out x = 1e4:
+         * 1e4 nodes times 1e4 terms: test_mie under ASan at -O0, quick 8,
+         * 11.7 -> 6.3 s of CPU (measured 2026-12-01); test_large still takes
+         * x = 1e4 and 1e5 there, and the main build this case */
+        if (mt_quick() > 1 && cs[i][0] > 1000) continue;
+        s = mist_mie_sphere_new(cs[i][0], m);
+        n = s.n_terms + 2;
         double *x = (double *)malloc(2 * (size_t)n * sizeof(double)), *w = x + n;
         double *p = (double *)malloc((size_t)n * sizeof(double));
         double i0 = 0, i1 = 0;
