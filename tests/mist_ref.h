@@ -186,16 +186,23 @@ static inline qreal ref_sample(qreal g, qreal a, qreal xi)
  * |u - u*| over the bound (<= 1 passes) and u* in *us.
  * ref_bar_q: at an exact xi given in __float128 (the fog's rescaled xi'),
  * the bar's xi term taken as 4 eps xt du/dxi (xt: what the rounding of the
- * caller's own xi moves xi' by, in units of eps); ref_bar: xi itself. */
-static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u, int flt,
-                               double *us)
+ * caller's own xi moves xi' by, in units of eps); ref_bar: xi itself;
+ * ref_bar_root: at a root q already found. */
+static inline double ref_bar_root(double g, qreal a, double xt, double u, int flt, qreal q,
+                                  double *us)
 {
-    double r = (double)ref_sample_from(g, a, xi, u), tol;
+    double r = (double)q, tol;
     tol = 4 * (flt ? (double)(nextafterf((float)fabs(r), INFINITY) - (float)fabs(r))
                    : nextafter(fabs(r), INFINITY) - fabs(r));
     if (fabs(g) < 1) tol += 4 * (flt ? 0x1p-24 : 0x1p-53) * xt / (double)ref_density_u(g, a, r);
     *us = r;
     return fabs(u - r) / tol;
+}
+
+static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u, int flt,
+                               double *us)
+{
+    return ref_bar_root(g, a, xt, u, flt, ref_sample_from(g, a, xi, u), us);
 }
 
 static inline double ref_bar(double g, qreal a, double xi, double u, int flt, double *us)
