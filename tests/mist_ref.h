@@ -136,7 +136,7 @@ static inline qreal ref_cdf(qreal g, qreal a, qreal u)
 static inline qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
 {
     const qreal d = (qreal)1e-30, p64 = (qreal)1 / 65536 / 65536 / 65536 / 65536;   /* 2^-64 */
-    const qreal ulp = p64 * p64 / 1024 / 1024 / 512;                        /* 2^-113 */
+    const qreal ulp = p64 / 65536 / 65536 / 65536 / 2;                      /* 2^-113 */
     qreal lo = -1, hi = 1, rlo = -xi, rhi = 1 - xi, flo = -1, fhi = -1;  /* f < 0: not yet */
     qreal u = start, f, r, un, s, ag = g < 0 ? -g : g, x = xi < 1 - xi ? xi : 1 - xi;
     qreal rt = (qreal)8e-34 * (ag >= (qreal)1e-3 ? 1 + 1 / (ag * ag * ag) : 1);

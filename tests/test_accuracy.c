@@ -797,28 +797,33 @@ static void test_fog(void)
 /* The reference inverse itself (tests/mist_ref.h, ref_sample_from): its
  * root u must bracket xi, F(u - h) <= xi <= F(u + h), with h = 2^-12 of the
  * double bar at u (what its convergence test promises), from starts at the
- * root, one part in 1e9 off, 0, and both ends, over g up to 1 - 2^-52,
- * alpha 0 to 1e8, xi from 1e-30 to 1 - 2^-53 (the bracket's slack: F's own
+ * root, one part in 1e9 off, 0, both ends, 2^-100 inside either end and
+ * the root's mirror image (a start near 1 with the root near -1 is where a
+ * step test alone once returned the wrong end; a review found it), over g
+ * up to 1 - 2^-53, alpha 0 to 1e15, xi from 1e-300 (a root within 2^-113 of
+ * -1) to 1 - 2^-53 (the bracket's slack: F's own
  * rounding, <= 1e-33 + 1e-34/g^3 at |g| >= 1e-3, measured in
  * mist_ref.h's comment, over the density: beside the residual's 2^-64 xi).
  * Negative control: u moved by 4 bars must fail the same bracket. */
 static void test_reference(void)
 {
     static const double gs[] = { 0, 1e-4, -2e-3, 0.3, -0.9, 0.999, -0x1.fffffp-1,
-                                 0x1.ffffffffffffep-1, -0x1.ffffffffffffep-1 };
-    static const double as[] = { 0, 1, 250, 1e8 };
-    static const double xs[] = { 1e-30, 1e-17, 1e-7, 0.25, 0.5, 0.9, 1 - 1e-9,
+                                 0x1.ffffffffffffep-1, -0x1.ffffffffffffep-1,
                                  0x1.fffffffffffffp-1 };
+    static const double as[] = { 0, 1, 250, 1e8, 1e15 };
+    static const double xs[] = { 1e-300, 1e-48, 1e-30, 1e-17, 1e-7, 0.25, 0.5, 0.9,
+                                 1 - 1e-9, 0x1.fffffffffffffp-1 };
     size_t ig, ia, ix;
     int k, bad = 0, n = 0, ctl = 0;
     for (ig = 0; ig < sizeof gs / sizeof *gs; ++ig)
         for (ia = 0; ia < sizeof as / sizeof *as; ++ia)
             for (ix = 0; ix < sizeof xs / sizeof *xs; ++ix) {
                 qreal g = gs[ig], a = as[ia], xi = xs[ix];
-                qreal u0 = ref_sample(g, a, xi), starts[5];
+                qreal u0 = ref_sample(g, a, xi), starts[8], e100 = (qreal)0x1p-100;
                 starts[0] = u0; starts[1] = u0 * (1 + (qreal)1e-9); starts[2] = 0;
-                starts[3] = -1; starts[4] = 1;
-                for (k = 0; k < 5; ++k) {
+                starts[3] = -1; starts[4] = 1; starts[5] = 1 - e100; starts[6] = -1 + e100;
+                starts[7] = -u0;
+                for (k = 0; k < 8; ++k) {
                     qreal u = ref_sample_from(g, a, xi, starts[k]), p = ref_density_u(g, a, u);
                     double ud = (double)u, ulp = nextafter(fabs(ud), INFINITY) - fabs(ud);
                     qreal bar = 4 * (qreal)ulp + 4 * (qreal)0x1p-53 * xi / p, h = bar / 4096;
@@ -839,6 +844,15 @@ static void test_reference(void)
                     }
                 }
             }
+    {   /* the review's case: a start 2^-103 below 1, the root at -1 + 9e-19
+         * (the previous inverse returned 1 there: F(1) - xi = 0.14) */
+        qreal g = 0x1.fffffffffffffp-1, a = 8.66891e13, xi = 0x1.391d6c94p-160;
+        qreal u = ref_sample_from(g, a, xi, 1 - (qreal)0x1p-103);
+        mt_check(u < -0.5 && ref_cdf(g, a, u) - xi < (qreal)1e-33 &&
+                 ref_cdf(g, a, u) - xi > -(qreal)1e-33,
+                 "reference inverse from near 1: u = %.20g, F(u) - xi = %g", (double)u,
+                 (double)(ref_cdf(g, a, u) - xi));
+    }
     mt_check(bad == 0, "reference inverse: %d of %d roots not bracketed within 2^-12 of the bar",
              bad, n);
     mt_check(ctl == 0, "reference control: %d roots moved 4 bars still bracketed", ctl);
