@@ -129,10 +129,14 @@ static inline qreal ref_cdf(qreal g, qreal a, qreal u)
  * now 5; the same roots to within 0.22% of the double bar over its 185083
  * calls, the largest differences at |g| within 2^-50 of 1 and xi near
  * 1e-17, where both are at the printed form's own rounding: F ~ xi
- * computed from terms of order 1, 1e-33 apart, over a density ~1e-16.  The old
- * test also took a step below 1e-30 as converged where the density peaks
- * narrower than that near u = -+1 at |g| = 1 - 2^-52: from a start there it
- * returned -1 for a root at -0.78.) */
+ * computed from terms of order 1, 1e-33 apart, over a density ~1e-16.  The
+ * old test also took a step below 1e-30 as converged where the density
+ * peaks narrower than that near u = -+1 at |g| near 1: from a start 2^-103
+ * below 1 at g = 1 - 2^-53, alpha 8.7e13, xi 1.2e-48 it returned 1 for a
+ * root at -1 + 9e-19 (found by a review; test_accuracy checks that case).
+ * Where F's rounding over a tiny density exceeds the step test, at |g|
+ * near 1 with alpha beyond 1e4, it still bisects down to 1e-30: up to ~200
+ * iterations on such inputs, measured by the review.) */
 static inline qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
 {
     const qreal d = (qreal)1e-30, p64 = (qreal)1 / 65536 / 65536 / 65536 / 65536;   /* 2^-64 */
