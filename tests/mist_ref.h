@@ -111,15 +111,24 @@ static inline qreal ref_cdf(qreal g, qreal a, qreal u)
     }
 }
 
+/* A bound on ref_cdf's absolute error: 8 times its rounding, 1e-34, and
+ * for |g| >= 1e-3 (the printed form) the 1/|g|^3 its terms cancel by (the
+ * head of this file); the Gauss-Legendre branch's own error is below 1e-60. */
+static inline qreal ref_cdf_err(qreal g)
+{
+    qreal ag = g < 0 ? -g : g;
+    return (qreal)8e-34 * (ag >= (qreal)1e-3 ? 1 + 1 / (ag * ag * ag) : 1);
+}
+
 /* Reference inverse: u* with P(cos <= u*) = xi.  Safeguarded Newton in
  * __float128 inside a bisection bracket that starts as [-1, 1]: it converges
  * from any start; `start` only saves iterations (it may come from the code
  * under test: the answer is defined by the CDF alone).  |g| = 1 returns g
  * (the delta).  Converged when the bracket is below 1e-30, or when Newton's
  * step is below 1e-30 + 2^-64 |u| and the residual below 2^-64 min(xi,
- * 1 - xi) + F's own error (8e-34, times 1/g^3 where the printed form
- * cancels): either way u is within ~2^-12 of the tests' smallest bar (4 ulps
- * of u* in double, 4 eps xi du/dxi) of the root of the computed CDF.  A
+ * 1 - xi) + F's own error (ref_cdf_err): either way u is within ~2^-12
+ * of the tests' smallest bar (4 ulps of u* in double, 4 eps xi du/dxi) of
+ * the root of the computed CDF.  A
  * step that would leave the bracket is retried from the bracket's ends
  * (the tangent at an end; at -1 and 1, where F is 0 and 1 exactly, never
  * evaluated), then bisects.  (Until 2026-12-01 the test was a step below
@@ -142,8 +151,7 @@ static inline qreal ref_sample_from(qreal g, qreal a, qreal xi, qreal start)
     const qreal d = (qreal)1e-30, p64 = (qreal)1 / 65536 / 65536 / 65536 / 65536;   /* 2^-64 */
     const qreal ulp = p64 / 65536 / 65536 / 65536 / 2;                      /* 2^-113 */
     qreal lo = -1, hi = 1, rlo = -xi, rhi = 1 - xi, flo = -1, fhi = -1;  /* f < 0: not yet */
-    qreal u = start, f, r, un, s, ag = g < 0 ? -g : g, x = xi < 1 - xi ? xi : 1 - xi;
-    qreal rt = (qreal)8e-34 * (ag >= (qreal)1e-3 ? 1 + 1 / (ag * ag * ag) : 1);
+    qreal u = start, f, r, un, s, x = xi < 1 - xi ? xi : 1 - xi, rt = ref_cdf_err(g);
     int it;
     if (g >= 1 || g <= -1) return g;
     if (xi <= 0) return -1;

@@ -801,9 +801,8 @@ static void test_fog(void)
  * the root's mirror image (a start near 1 with the root near -1 is where a
  * step test alone once returned the wrong end; a review found it), over g
  * up to 1 - 2^-53, alpha 0 to 1e15, xi from 1e-300 (a root within 2^-113 of
- * -1) to 1 - 2^-53 (the bracket's slack: F's own
- * rounding, <= 1e-33 + 1e-34/g^3 at |g| >= 1e-3, measured in
- * mist_ref.h's comment, over the density: beside the residual's 2^-64 xi).
+ * -1) to 1 - 2^-53 (h at least F's own error, ref_cdf_err, over the
+ * density: what the inverse's residual test allows beside its 2^-64 xi).
  * Negative control: u moved by 4 bars must fail the same bracket. */
 static void test_reference(void)
 {
@@ -827,9 +826,9 @@ static void test_reference(void)
                     qreal u = ref_sample_from(g, a, xi, starts[k]), p = ref_density_u(g, a, u);
                     double ud = (double)u, ulp = nextafter(fabs(ud), INFINITY) - fabs(ud);
                     qreal bar = 4 * (qreal)ulp + 4 * (qreal)0x1p-53 * xi / p, h = bar / 4096;
-                    qreal ag = g < 0 ? -g : g, sl = ((qreal)1e-33 + (qreal)1e-34 / (ag * ag * ag + (qreal)1e-300)) / p;
+                    qreal sl = ref_cdf_err(g) / p;
                     int ok;
-                    if (h < sl && fabs((double)g) >= 1e-3) h = sl;
+                    if (h < sl) h = sl;
                     ok = (u - h <= -1 || ref_cdf(g, a, u - h) <= xi) &&
                          (u + h >= 1 || ref_cdf(g, a, u + h) >= xi);
                     bad += !ok; ++n;
@@ -848,8 +847,8 @@ static void test_reference(void)
          * (the previous inverse returned 1 there: F(1) - xi = 0.14) */
         qreal g = 0x1.fffffffffffffp-1, a = 8.66891e13, xi = 0x1.391d6c94p-160;
         qreal u = ref_sample_from(g, a, xi, 1 - (qreal)0x1p-103);
-        mt_check(u < -0.5 && ref_cdf(g, a, u) - xi < (qreal)1e-33 &&
-                 ref_cdf(g, a, u) - xi > -(qreal)1e-33,
+        mt_check(u < -0.5 && ref_cdf(g, a, u) - xi < ref_cdf_err(g) &&
+                 ref_cdf(g, a, u) - xi > -ref_cdf_err(g),
                  "reference inverse from near 1: u = %.20g, F(u) - xi = %g", (double)u,
                  (double)(ref_cdf(g, a, u) - xi));
     }
