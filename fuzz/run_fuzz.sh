@@ -1,12 +1,13 @@
 #!/bin/sh
-# run_fuzz.sh SRC WORK HARNESS SECONDS - builds fuzz/fuzz_HARNESS.c with
-# clang's libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer and
+# run_fuzz.sh SRC WORK HARNESS SECONDS [OPT] - builds fuzz/fuzz_HARNESS.c
+# with clang's libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer at
+# the optimisation level OPT (default -O1; ctest passes MIST_FUZZ_OPT) and
 # runs it for SECONDS over the kept corpus fuzz/corpus/HARNESS/ (read only:
 # new inputs go to WORK/corpus-HARNESS, a crash to WORK/HARNESS-crash-*).
 # Exits 77 (ctest: skipped) with a message when no clang with libFuzzer is
 # found.  MIST_FUZZ_CC picks the compiler (default: clang).
 set -u
-src=$1; work=$2; name=$3; secs=$4
+src=$1; work=$2; name=$3; secs=$4; opt=${5:--O1}
 cc=${MIST_FUZZ_CC:-clang}
 mkdir -p "$work/corpus-$name" || exit 1
 probe="$work/probe-$name.c"   # one a harness: ctest -j runs them side by side
@@ -20,8 +21,8 @@ then
     echo "$cc with libFuzzer (-fsanitize=fuzzer,address,undefined) not available: test skipped"
     exit 77
 fi
-echo "building fuzz_$name with $cc"
-"$cc" -std=c99 -g -O1 -Wall -Wextra -Wpedantic -Werror \
+echo "building fuzz_$name with $cc $opt"
+"$cc" -std=c99 -g "$opt" -Wall -Wextra -Wpedantic -Werror \
       -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
       -I"$src/include" -I"$src/tests" "$src/fuzz/fuzz_$name.c" -o "$work/fuzz_$name" -lm || exit 1
 # -error_exitcode: libFuzzer's default, 77, would read as "skipped"
