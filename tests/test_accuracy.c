@@ -852,6 +852,40 @@ static void test_reference(void)
                  "reference inverse from near 1: u = %.20g, F(u) - xi = %g", (double)u,
                  (double)(ref_cdf(g, a, u) - xi));
     }
+    {   /* ref_bar's residual stop (tests/mist_ref.h) where it saves the most,
+         * alpha -> inf near u = 0 (xi near F(0) and 1/2): within 2^-12 of
+         * the bar's xi term (double's, the smaller) of the full inverse's
+         * root, from two starts; control: a stop at 2^-45 xi, 2^22 times
+         * looser, must miss that somewhere */
+        static const double hg[] = { 0, 1e-40, 1e-6, -1e-3, 0.3 };
+        static const double ha[] = { 1e8, 1e20, 1e300, INFINITY };
+        const qreal p67 = (qreal)1 / 65536 / 65536 / 65536 / 65536 / 8, p45 = p67 * 4194304;
+        int nb = 0, bb = 0, cb = 0, j;
+        for (ig = 0; ig < sizeof hg / sizeof *hg; ++ig)
+            for (ia = 0; ia < sizeof ha / sizeof *ha; ++ia) {
+                qreal g = hg[ig], a = ha[ia] > 1e308 ? (qreal)1e300 * 1e300 * 1e300 : ha[ia];
+                for (j = 0; j < 12; ++j) {
+                    double xd = j < 6 ? (double)ref_cdf(g, a, 0) : 0.5;
+                    qreal xi, uf, x, t;
+                    for (k = 0; k < j % 6; ++k) xd = nextafter(xd, 0);
+                    xi = xd; x = xi < 1 - xi ? xi : 1 - xi;
+                    uf = ref_sample_from(g, a, xi, 0);
+                    t = 4 * (qreal)0x1p-53 * xi / ref_density_u(g, a, uf) / 4096;
+                    for (k = 0; k < 2; ++k) {
+                        qreal st = k ? uf * (1 + (qreal)1e-3) + (qreal)1e-9 : 0;
+                        qreal us = ref_sample_stop(g, a, xi, st, p67 * x);
+                        qreal uc = ref_sample_stop(g, a, xi, st, p45 * x);
+                        bb += !((us > uf ? us - uf : uf - us) <= t); ++nb;
+                        cb += !((uc > uf ? uc - uf : uf - uc) <= t);
+                    }
+                }
+            }
+        mt_check(bb == 0, "reference: ref_bar's residual stop: %d of %d roots beyond 2^-12 of "
+                 "the bar's xi term", bb, nb);
+        mt_check(cb > 0, "reference control: a residual stop at 2^-45 xi kept all %d roots", nb);
+        printf("test_accuracy: ref_bar's residual stop: %d roots within 2^-12 of the bar's xi "
+               "term (control at 2^-45 xi: %d beyond)\n", nb, cb);
+    }
     mt_check(bad == 0, "reference inverse: %d of %d roots not bracketed within 2^-12 of the bar",
              bad, n);
     mt_check(ctl == 0, "reference control: %d roots moved 4 bars still bracketed", ctl);
