@@ -140,8 +140,11 @@ endforeach()
 #             double Draine samplers' long double fallback, taken after 64
 #             unsettled double-double steps or a NaN residual
 #             (mist__draine_ddfin returning 0: mist__draine_solve and
-#             mist__phase_try, include/mist.h), so with -march=native it
-#             repeats accuracy (it is still built: same_samples compares its
+#             mist__phase_try, include/mist.h), so with -march=native on
+#             a host with FMA it repeats accuracy (on one without, the main
+#             build's accuracy_nold runs the same Dekker path without
+#             contraction, which there is none to do; it is still built:
+#             same_samples compares its
 #             fingerprint; 3.1 s of the 16 s of CPU O3's tests took,
 #             2026-12-02, Intel Xeon VM).  batch_nold stays: with
 #             -fno-math-errno (MIST_BENCH_FLAGS) it is O3's only build of
