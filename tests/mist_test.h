@@ -43,8 +43,9 @@ static inline int mt_done(const char *name)
 /* Quick mode: MIST_TEST_QUICK=k in the environment (an integer k >= 1;     */
 /* unset, empty, 0 or 1: full size) divides the random draws and sample     */
 /* counts of test_accuracy, test_chi2 and test_height_fog by k (test_fits:  */
-/* its Mie reference's radii, not below half).  The fixed edge cases and    */
-/* grids always run in full.  For the slow sub-builds of                    */
+/* its Mie reference's radii, not below half; test_batch: its arrays longer */
+/* than 100 only where the code depends on n, test_batch.c).  The fixed     */
+/* edge cases and grids always run in full.  For the slow sub-builds of     */
 /* tests/robustness.cmake (the asan variant, -O0 under ASan + UBSan), so    */
 /* that they run the whole suite; the main build runs at full size.         */
 /* ------------------------------------------------------------------------ */

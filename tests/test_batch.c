@@ -17,7 +17,13 @@
  * MIST_DRAINE_PREPARE_N = 1024 on, the unprepared Draine batch sampler is
  * the prepared one's, compared with mist_phase_sample, except where its
  * eq. 6 kernel applies, mist__draine_vn(g, alpha, n): there the scalar
- * function's) and 1100; in place; and no element past n is written.  Built twice by CMake: with the project's
+ * function's) and 1100; in place; and no element past n is written.  In
+ * quick mode (MIST_TEST_QUICK > 1: the variant builds, tests/mist_test.h)
+ * the lengths above 100 only for mist_draine_sample_n, whose code depends
+ * on n there (MIST_DRAINE_PREPARE_N, mist__draine_vn); for the others
+ * 100 already spans three blocks of 32 and a remainder (under ASan at -O0
+ * the long lengths took most of batch_nold's 9.9 s of CPU, 2026-12-02).
+ * Built twice by CMake: with the project's
  * flags and with -march=native -fno-math-errno (so that the vectorised
  * code is what is compared).  The comparison is by bits (a -0 for a +0 or
  * a different NaN would fail); a negative control checks that it sees a
@@ -199,6 +205,7 @@ static void check_##T(int k, T g, T a, mt_rng *r)                               
     size_t ni;                                                                    \
     for (ni = 0; ni < sizeof n_list / sizeof n_list[0]; ++ni) {                   \
         int n = n_list[ni], i, bad = -1;                                          \
+        if (n > 100 && k != DR_SAMPLE && mt_quick() > 1) continue;  /* QUICK */  \
         inputs_##T(k, g, r, in, n);                                               \
         for (i = 0; i < n; ++i) ref[i] = scalar_##T(k, g, a, in[i], n);             \
         for (i = 0; i < n + GUARD; ++i) out[i] = (T)12345;                        \

@@ -8,9 +8,9 @@
 # consumer test (neither depends on FLAGS) and those whose names match the
 # regular expression EXCLUDE ("" for none), with
 # MIST_STRESS_CALLS=STRESS_CALLS for the stress test and MIST_TEST_QUICK=QUICK
-# (default 1: full size) for test_accuracy, test_chi2 and test_height_fog
-# (tests/mist_test.h: their random draws and sample counts / QUICK, the
-# fixed edge cases and grids in full), and MIST_TEST_NATIVE=NATIVE (default
+# (default 1: full size) for test_accuracy, test_chi2, test_height_fog and
+# test_batch (tests/mist_test.h: their random draws and sample counts /
+# QUICK, the fixed edge cases and grids in full), and MIST_TEST_NATIVE=NATIVE (default
 # ON: the tests' builds with the benchmark's flags too).  Exits 77 (ctest:
 # skipped) with a message when CC cannot build and run a program with FLAGS
 # (e.g. no sanitizer runtime).
