@@ -228,14 +228,22 @@ static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u,
  * |r| / f of the root, f the density between them, which is 2^-16 of the
  * bar's xi term (4 eps xi du/dxi = 2^-51 xi / f(u*), double's eps) where
  * f is about f(u*); where f ~ k u^2 near u = 0 (alpha -> inf), |r| =
- * k |u^3 - u*^3| / 3 keeps |u - u*| within 3 |r| / f(u*) (the worst case
- * u = 0), 3 2^-16 of that term.  There Newton converges only linearly (by
+ * k |u^3 - u*^3| / 3 keeps |u - u*| within 4 |r| / f(u*) (the ratio
+ * 3 u*^2 / (u^2 + u u* + u*^2) is largest, 4, at u = -0.5 u*: an independent
+ * review, 2026-12-02, found 3.998 2^-16 there), 4 2^-16 of that term, and
+ * 3.2 2^-16 from the samplers' own answers as starts (~5e6 random starts
+ * over the whole domain).  There Newton converges only linearly (by
  * 2/3 a step) and ref_sample_from bisects down to 1e-30: test_huge_alpha's
  * 6864 roots took 1.8 s of test_accuracy's 3 in the O3 variant, 0.9 s
  * with this stop, every printed figure the same (2026-12-02; test_reference
  * checks the stop against the full inverse there, with a control).  Where
- * F's own rounding exceeds 2^-67 xi (xi below ~1e-13, or |g| small in the
- * printed form) the stop is never reached and the other stops hold. */
+ * F's own rounding (ref_cdf_err) exceeds 2^-67 xi (xi below ~1e-13, or |g|
+ * small in the printed form) the stop can fire inside F's noise: the root
+ * is then as uncertain as the full inverse's is there anyway, by F's
+ * rounding over f (the review: at g = 1 - 2^-53, alpha 1.3e85, xi 5.8e-18
+ * the two differ by 0.006 of the bar, each ~0.015 of its xi term from
+ * mpmath's root; 0.88 of 2^-14 of the xi term plus 2 ref_cdf_err / f at
+ * worst). */
 static inline double ref_bar(double g, qreal a, double xi, double u, int flt, double *us)
 {
     const qreal p67 = (qreal)1 / 65536 / 65536 / 65536 / 65536 / 8;       /* 2^-67 */

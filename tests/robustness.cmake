@@ -108,9 +108,11 @@ endforeach()
 #             batch took 7.8 s of CPU here.  batch_nold stays: built with
 #             -march=native -fno-math-errno it is asan's only build of the
 #             vectorised kernels (mist__draine_vk, the fma branches) and
-#             their stack blocks, and of n = 0 and n >= 1024, which the
-#             stress run's batches (n 1 to 80) do not reach: an independent
-#             review, 2026-12-02), with
+#             their stack blocks, and of n = 0 and n >= 1024 (in quick
+#             mode for mist_draine_sample_n and mist_phase_sample_n, the
+#             batch forms whose code depends on n there: test_batch.c),
+#             which the stress run's batches (n 1 to 80) do not reach: an
+#             independent review, 2026-12-02), with
 #             MIST_TEST_QUICK=MIST_VARIANT_QUICK (8): accuracy, chi2 and
 #             height_fog draw an eighth of their random points and samples,
 #             but never below each count's floor (mt_scale's lo: chi2 keeps
