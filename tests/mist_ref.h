@@ -224,7 +224,7 @@ static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u,
 
 /* ref_bar: the root only as closely as the bar needs it.  Besides
  * ref_sample_from's stops, a residual r = F(u) - xi with |r| <= 2^-67
- * min(xi, 1 - xi) ends the search (ref_sample_stop): u is then within
+ * min(xi, 1 - xi) ends the search (ref_sample_stop, ref_bar_rstop): u is then within
  * |r| / f of the root, f the density between them, which is 2^-16 of the
  * bar's xi term (4 eps xi du/dxi = 2^-51 xi / f(u*), double's eps) where
  * f is about f(u*); where f ~ k u^2 near u = 0 (alpha -> inf), |r| =
@@ -244,11 +244,14 @@ static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u,
  * the two differ by 0.006 of the bar, each ~0.015 of its xi term from
  * mpmath's root; 0.88 of 2^-14 of the xi term plus 2 ref_cdf_err / f at
  * worst). */
+static inline qreal ref_bar_rstop(qreal xi)    /* 2^-67 min(xi, 1 - xi) */
+{
+    return (xi < 1 - xi ? xi : 1 - xi) / 65536 / 65536 / 65536 / 65536 / 8;
+}
+
 static inline double ref_bar(double g, qreal a, double xi, double u, int flt, double *us)
 {
-    const qreal p67 = (qreal)1 / 65536 / 65536 / 65536 / 65536 / 8;       /* 2^-67 */
-    qreal x = (qreal)(xi < 1 - xi ? xi : 1 - xi);
-    return ref_bar_root(g, a, xi, u, flt, ref_sample_stop(g, a, xi, u, p67 * x), us);
+    return ref_bar_root(g, a, xi, u, flt, ref_sample_stop(g, a, xi, u, ref_bar_rstop(xi)), us);
 }
 
 #endif

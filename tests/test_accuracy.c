@@ -859,22 +859,21 @@ static void test_reference(void)
          * looser, must miss that somewhere */
         static const double hg[] = { 0, 1e-40, 1e-6, -1e-3, 0.3 };
         static const double ha[] = { 1e8, 1e20, 1e300, INFINITY };
-        const qreal p67 = (qreal)1 / 65536 / 65536 / 65536 / 65536 / 8, p45 = p67 * 4194304;
         int nb = 0, bb = 0, cb = 0, j;
         for (ig = 0; ig < sizeof hg / sizeof *hg; ++ig)
             for (ia = 0; ia < sizeof ha / sizeof *ha; ++ia) {
                 qreal g = hg[ig], a = ha[ia] > 1e308 ? (qreal)1e300 * 1e300 * 1e300 : ha[ia];
                 for (j = 0; j < 12; ++j) {
                     double xd = j < 6 ? (double)ref_cdf(g, a, 0) : 0.5;
-                    qreal xi, uf, x, t;
+                    qreal xi, uf, t;
                     for (k = 0; k < j % 6; ++k) xd = nextafter(xd, 0);
-                    xi = xd; x = xi < 1 - xi ? xi : 1 - xi;
+                    xi = xd;
                     uf = ref_sample_from(g, a, xi, 0);
                     t = 4 * (qreal)0x1p-53 * xi / ref_density_u(g, a, uf) / 4096;
                     for (k = 0; k < 2; ++k) {
                         qreal st = k ? uf * (1 + (qreal)1e-3) + (qreal)1e-9 : 0;
-                        qreal us = ref_sample_stop(g, a, xi, st, p67 * x);
-                        qreal uc = ref_sample_stop(g, a, xi, st, p45 * x);
+                        qreal us = ref_sample_stop(g, a, xi, st, ref_bar_rstop(xi));
+                        qreal uc = ref_sample_stop(g, a, xi, st, ref_bar_rstop(xi) * 4194304);
                         bb += !((us > uf ? us - uf : uf - us) <= t); ++nb;
                         cb += !((uc > uf ? uc - uf : uf - uc) <= t);
                     }
