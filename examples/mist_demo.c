@@ -2,7 +2,8 @@
  *
  * Build and run (from the repository root):
  *   cc -std=c99 -O2 -Iinclude examples/mist_demo.c -o mist_demo -lm
- *   ./mist_demo [out.svg]        (default: phase_functions.svg, here)
+ *   ./mist_demo [out.svg]   (default: phase_functions.svg beside the program,
+ *                            so a CMake build writes it into the build tree)
  *
  * It does two things:
  *   1. writes an SVG (plain SVG 1.1, no external resources; open it in a
@@ -22,6 +23,7 @@
 #include "mist.h"
 
 #include <stdio.h>
+#include "beside.h"
 
 #define PI 3.14159265358979323846
 
@@ -376,12 +378,15 @@ static void panel_range(panel *p, const curve *cs, int n)
 
 #define NCURVE 19
 
+
 int main(int argc, char **argv)
 {
     static const double gs[5] = { 0.0, 0.3, 0.6, 0.9, -0.5 };
     static const double alphas[4] = { 0.0, 1.0, 17.0, 250.0 };
     static const double ds[4] = { 5.0, 10.0, 20.0, 50.0 };
-    const char *path = argc > 1 ? argv[1] : "phase_functions.svg";
+    char defpath[4096];
+    const char *path = argc > 1 ? argv[1] : beside_program(defpath, sizeof defpath, argv[0],
+                                                           "phase_functions.svg");
     curve cs[NCURVE];
     char lab[NCURVE][64];
     const char *labp[NCURVE];

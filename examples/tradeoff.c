@@ -1,7 +1,7 @@
 /* tradeoff.c - error against run time: how close each phase-function model
  * comes to Lorenz-Mie for fog droplets, and what it costs per evaluation
  * and per sample, measured in the same run.  Prints Markdown tables
- * (stdout) and writes an SVG plot (argv[1], default tradeoff.svg here).
+ * (stdout) and writes an SVG plot (argv[1], default tradeoff.svg beside the program).
  *
  * Build and run (from the repository root):
  *   cc -std=c99 -O2 -Iinclude -Itests examples/tradeoff.c -o tradeoff -lm
@@ -71,6 +71,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include "beside.h"
 
 #define NB      4096       /* inputs per timed repetition */
 #define REPS    15
@@ -740,7 +741,9 @@ int main(int argc, char **argv)
         "Jendersie-d'Eon fit, HG + Draine (mist_fog_from_diameter)",
         "LUT uniform in \xce\xb8 (acos), 16 / 64 / 256 / 1024 entries",
         "LUT in a warped coordinate (3 sqrt), 16 / 64 / 256 / 1024 entries" };
-    const char *out = argc > 1 ? argv[1] : "tradeoff.svg";
+    char defout[4096];
+    const char *out = argc > 1 ? argv[1] : beside_program(defout, sizeof defout, argv[0],
+                                                          "tradeoff.svg");
     double l1[NM][ND], lr[NM][ND], ne[NM][ND], nsa[NM][ND], ne_m[NM], ns_m[NM];
     double t_start = now(), xlf_int[ND], xlf_min[ND], xlf_neg[ND];
     int neg[NM];
