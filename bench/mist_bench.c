@@ -767,8 +767,8 @@ static void mie_rows(void)
 
 /* ---- every other public function ------------------------------------------ */
 
-/* The rest of the public evaluation and sampling functions (issue 5: "every
- * public evaluation and sampling function, float and double"), each beside
+/* The rest of the public evaluation and sampling functions (every
+ * public evaluation and sampling function, float and double), each beside
  * a baseline of the same run: the formula as printed (tests/mist_printed.h)
  * where there is one, else the scalar function it builds on (the direction
  * samplers against their u samplers: the cost of the direction), else its

@@ -4,9 +4,8 @@
  * by Dekker's product (see "Henyey-Greenstein: exact sampling" in mist.h;
  * for HG and Rayleigh also what every build without fma gets),
  * timed by bench/mist_bench.c in loops of the same shape as its own
- * (bench/bench.h).  (Until the fifth session of 2026-11-27 this file was
- * built with -mno-fma alone, which leaves AVX-512's fma and FP_FAST_FMA:
- * its rows timed the fma path.) */
+ * (bench/bench.h).  -mno-fma alone is not enough: AVX-512 keeps fma and
+ * FP_FAST_FMA. */
 #define MIST_NO_LONG_DOUBLE
 #include "mist.h"
 #include "bench.h"

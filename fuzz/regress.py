@@ -174,7 +174,7 @@ CASES = {
         # NaN: (length w0) s0 + (length w1) s1 = -inf + inf (exact: -9.5e309, -inf)
         'segment-nan-d': segment('d', 0.0, 0.0, '-0x1.ce5beeea71fdep+8', '0x1.641a732a51c14p+8',
                                  '0x1.ffffffffffffep+1023'),
-        # --- issue 6, fixed in the stress test's last round (each failed before) ---
+        # --- found by the stress test (each failed before its fix) ---
         # (a) the direction's normalised y underflows to 0 (a level ray, the
         # documented convention): to infinity, C = +inf and T = 0 (was
         # 0.0032: y taken as +TMIN, a ray going up; H subnormal too)

@@ -2,8 +2,8 @@
  * errors by ctest (compile_opt_*): flow-sensitive warnings appear only
  * there.  A caller of mist_hfog_layers_eval with one constant layer count
  * made gcc 12 -O2 -Wall warn -Wmaybe-uninitialized inside the header
- * (arrays set only where they are read); fixed in the fifth session of
- * 2026-11-27, and this file fails on the header before that. */
+ * (arrays set only where they are read, now initialised); this file is
+ * the regression test. */
 #include "mist.h"
 
 double compile_opt_layers(const mist_hfog *f, mist_vec3 o, mist_vec3 d);

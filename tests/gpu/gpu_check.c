@@ -8,9 +8,7 @@
  *     Rayleigh, and the batch forms: test_accuracy.c's bar,
  *       |u - u*| <= 4 ulp(u*) + 4 eps xi du/dxi,
  *     device and host alike (device code has no long double: its double
- *     samplers finish in double-double, with the same bar; until the sixth
- *     session of 2026-11-27 the double Draine and CS samplers ran in double
- *     there and this allowed them 2x, or 6x above alpha = 1e4);
+ *     samplers finish in double-double, with the same bar);
  *   - densities: relative error against the __float128 density, in units of
  *     the type's eps; the device's worst may not exceed twice the host's
  *     worst on the same inputs plus 8 (fma contraction moves a few roundings);
