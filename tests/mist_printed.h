@@ -44,7 +44,37 @@ MP_FN double hg_sample_printed_d(double g, double xi) { EQ3(double) }
     return g / 2 + (1 / (2 * g) - 1 / (8 * g) * w * w);
 MP_FN float  draine_eq6f(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrtf) }
 MP_FN double draine_eq6(double g, double alpha, double xi) { EQ6(double, sqrt, cbrt) }
+
+/* The samplers renderers ship, written here from their published form as
+ * the benchmark's baselines.  Blender Cycles and pbrt-v4 sample HG by eq. 3
+ * with the eq. 4 fallback (hg_sample_printed above); Cycles samples Draine
+ * by eq. 6 in float and Rayleigh by the cubic's closed form, both with a
+ * cube root from the exponent bits and two Newton steps in place of cbrtf.
+ * rcbrt_bitsf(x) = x^(-1/3) for normal x > 0: the bits' estimate is within
+ * ~4% (the exponent divided by 3, the mantissa linear), each Newton step
+ * y (4 - x y^3) / 3 squares the relative error: ~2e-5 after two. */
+MP_FN float rcbrt_bitsf(float x)
+{
+    union { float f; unsigned int u; } v;
+    float y;
+    v.f = x;
+    v.u = 0x54a2fa8cu - v.u / 3u;   /* (4/3) 2^23 (127 - 0.0450466) */
+    y = v.f;
+    y = y * (4.0f - x * y * y * y) * (1.0f / 3.0f);
+    y = y * (4.0f - x * y * y * y) * (1.0f / 3.0f);
+    return y;
+}
+MP_FN float cbrt_bitsf(float x) { return 1.0f / rcbrt_bitsf(x); }
+MP_FN float draine_cyclesf(float g, float alpha, float xi) { EQ6(float, sqrtf, cbrt_bitsf) }
 #undef EQ6
+/* Rayleigh: u^3 + 3u = a (a = 4 xi - 2) has the root u = c - 1/c, c =
+ * cbrt(a + sqrt(a^2 + 4)) / cbrt(2); with r = 1/c from rcbrt_bitsf */
+MP_FN float rayleigh_cyclesf(float xi)
+{
+    float a = 2 - 4 * xi;
+    float r = -rcbrt_bitsf(sqrtf(1 + a * a) + a);
+    return 1 / r - r;
+}
 
 /* [JD23] eq. 5 (Draine; Cornette-Shanks at alpha = 1), with eq. 2's pow,
  * and the fog mixture of eq. 2 and 5 (weight w of Draine) */
