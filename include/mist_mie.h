@@ -94,7 +94,10 @@
  *   Bad x or m: the sphere has status MIST_MIE_EDOMAIN and every number in
  *   it is 0; every function given such a sphere returns 0.  Finite valid
  *   input never gives NaN or infinity.  No function ever reads or writes
- *   outside the memory it was given.
+ *   outside the memory it was given, nor loops without end, in any build:
+ *   also with MIST_ALLOW_FAST_MATH under -ffast-math (which may delete
+ *   NaN tests), every size, index and loop count derived from a double is
+ *   checked on its bits and bounded in integers (test_mie_fastmath).
  *
  * REFERENCES (section by section below)
  *   [BH83] C. Bohren, D. Huffman, "Absorption and Scattering of Light by
@@ -132,7 +135,9 @@
 #include <math.h>
 #include <float.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The fast-math guard of mist.h (see FAST MATH there; MIST_ALLOW_FAST_MATH
  * turns it off): without it gcc -ffast-math drops the NaN tests and
@@ -313,6 +318,39 @@ MIST_MIE_FUNC MIST_MIE__HOT mist_mie_complex mist_mie__inv(mist_mie_complex b)
     return mist_mie__div(mist_mie_cplx(1, 0), b);
 }
 
+/* The exponent field of v (2047: inf or NaN), read from its bits.  The
+ * compiler may assume under -ffinite-math-only (MIST_ALLOW_FAST_MATH with
+ * -ffast-math) that no double is NaN or infinite and delete v != v and the
+ * comparisons a NaN fails; it cannot delete a test of the bits.  Every
+ * check that guards a size, an index or a loop count is made this way:
+ * the opt-out may give wrong numbers, never a write outside the memory
+ * mist was given or an endless loop. */
+MIST_MIE_FUNC int mist_mie__expo(double v)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    return (int)((b >> 52) & 2047u);
+}
+
+/* v is NaN (by its bits). */
+MIST_MIE_FUNC int mist_mie__isnan(double v)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    return (b & ~((uint64_t)1 << 63)) > ((uint64_t)2047 << 52);
+}
+
+/* v as an integer, clamped to [lo, hi] (lo for NaN): the conversion of a
+ * NaN or out-of-range double to an integer is undefined, so it is checked
+ * on the bits first; finite comparisons hold under every flag. */
+MIST_MIE_FUNC long mist_mie__clampl(double v, long lo, long hi)
+{
+    if (mist_mie__expo(v) == 2047) return mist_mie__isnan(v) || v < 0 ? lo : hi;
+    if (v <= (double)lo) return lo;
+    if (v >= (double)hi) return hi;
+    return (long)v;
+}
+
 /* ======================================================================== */
 /* Number of terms  [W80 p. 1508, W79 eq. R50]                              */
 /*   N = x + 4 x^(1/3) + 1      x <= 8                                      */
@@ -322,14 +360,14 @@ MIST_MIE_FUNC MIST_MIE__HOT mist_mie_complex mist_mie__inv(mist_mie_complex b)
 /* ======================================================================== */
 
 /* Wiscombe's N(x).  Domain: x in (0, MIST_MIE_X_MAX]; else 0. */
+#define MIST_MIE__N_MAX 100300      /* N(MIST_MIE_X_MAX) = 100188, a bound */
 MIST_MIE_FUNC int mist_mie_terms(double x)
 {
     double c;
-    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
+    if (mist_mie__expo(x) == 2047 || !(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
     c = pow(x, 1.0 / 3.0);
-    if (x <= 8) return (int)(x + 4 * c + 1);
-    if (x < 4200) return (int)(x + 4.05 * c + 2);
-    return (int)(x + 4 * c + 2);
+    c = x <= 8 ? x + 4 * c + 1 : x < 4200 ? x + 4.05 * c + 2 : x + 4 * c + 2;
+    return (int)mist_mie__clampl(c, 1, MIST_MIE__N_MAX);
 }
 
 /* The terms summed: from Wiscombe's N on, until a term is below 1e-18 of
@@ -345,7 +383,7 @@ MIST_MIE_FUNC int mist_mie_terms(double x)
 MIST_MIE_FUNC int mist_mie__cap(double x)
 {
     int n = mist_mie_terms(x);
-    return n > 0 ? n + (int)(4 * pow(x, 1.0 / 3.0)) + 8 : 0;
+    return n > 0 ? n + (int)mist_mie__clampl(4 * pow(x, 1.0 / 3.0), 0, 200) + 8 : 0;
 }
 #define MIST_MIE__TAIL 1e-36          /* (term / largest term)^2 that stops */
 
@@ -380,7 +418,7 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
     mist_mie_complex zi = mist_mie__inv(z);
     mist_mie_complex f, c, d, ak, delta;
     double az = sqrt(mist_mie__abs2(z));
-    long k, kmax = (long)(4 * az) + 4L * n + 1000;
+    long k, kmax = mist_mie__clampl(4 * az, 0, 4 * (long)MIST_MIE_MX_MAX) + 4L * n + 1000;
     double sgn = -1;
     f = c = mist_mie__scale(zi, 2.0 * n + 1);          /* a_1 */
     d = mist_mie_cplx(0, 0);
@@ -441,10 +479,10 @@ MIST_MIE_FUNC int mist_mie__valid(double x, mist_mie_complex m, int *pec)
 {
     double am;
     *pec = 0;
-    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;           /* also NaN */
-    if (m.re != m.re || m.im != m.im) return 0;
+    if (mist_mie__expo(x) == 2047 || !(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
+    if (mist_mie__isnan(m.re) || mist_mie__isnan(m.im)) return 0;
     if (!(m.re > 0) || !(m.im >= 0)) return 0;
-    if (m.re == (double)INFINITY || m.im == (double)INFINITY) { *pec = 1; return 1; }
+    if (mist_mie__expo(m.re) == 2047 || mist_mie__expo(m.im) == 2047) { *pec = 1; return 1; }
     am = sqrt(m.re * m.re + m.im * m.im);
     if (!(am >= MIST_MIE_M_MIN && am <= MIST_MIE_M_MAX)) return 0;
     if (!(am * x <= MIST_MIE_MX_MAX)) return 0;
@@ -489,7 +527,9 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
     nw = mist_mie_terms(x);                     /* the fewest: Wiscombe's N */
-    if (!work || n_work < mist_mie_workspace_size(x))
+    if (nt <= 0 || nw <= 0) return mist_mie__zero(MIST_MIE_EDOMAIN);
+    /* the size checked here is the one the indices below use: 9 (nt + 1) */
+    if (!work || n_work / 9 < (size_t)nt + 1)
         return mist_mie__zero(MIST_MIE_ENOMEM);
     s = mist_mie__zero(MIST_MIE_OK);
     s.x = x; s.m = m; s.coef_ = work; s.amp_scale_ = 1;
@@ -563,7 +603,9 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
         }
     }
-    n1 = (int)floor(x) + 1;                     /* first n with n > x */
+    /* first n with n > x, in [1, nt + 1] whatever x (an integer bound on
+     * the indices of dx[] below, in every build) */
+    n1 = (int)mist_mie__clampl(floor(x), 0, nt) + 1;
     if (n1 <= nt) {
         double d = mist_mie__lentz(nt, mist_mie_cplx(x, 0)).re;
         dx[nt] = d;
@@ -888,7 +930,7 @@ MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
         1.56e-7, 1.48e-7, 1.25e-7 };
     int st = MIST_MIE_OK, i;
     double t, f;
-    if (lambda_nm != lambda_nm) {
+    if (mist_mie__isnan(lambda_nm)) {
         if (status) *status = MIST_MIE_EDOMAIN;
         return mist_mie_cplx(0, 0);
     }
@@ -896,8 +938,7 @@ MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
     if (lambda_nm > 800) { lambda_nm = 800; st = MIST_MIE_CLAMPED; }
     if (status) *status = st;
     t = (lambda_nm - 350) / 25;                /* in [0, 18] */
-    i = (int)t;
-    if (i > 17) i = 17;
+    i = (int)mist_mie__clampl(t, 0, 17);       /* the table's index, in every build */
     f = t - i;
     return mist_mie_cplx(n_hq[i] + f * (n_hq[i + 1] - n_hq[i]),
                          k_hq[i] + f * (k_hq[i + 1] - k_hq[i]));
@@ -1279,7 +1320,7 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
             /* size-parameter spacing <= 0.05 at the top of the range */
             span = 2 * MIST_MIE__PI * n_medium / lmin * (logv ? rmax * (t1 - t0) : rmax - r0);
             span = span / 0.05;
-            nodes = span < 64 ? 64 : (span > 65536 ? 65536 : (size_t)span + 1);
+            nodes = (size_t)mist_mie__clampl(span, 63, 65535) + 1;
         }
         nodes = (nodes + 7) / 8 * 8;
         h = (t1 - t0) / (double)(nodes / 8);
