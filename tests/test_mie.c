@@ -152,6 +152,58 @@ static void test_series_tail(void)
 }
 
 /* ======================================================================== */
+/* mu = +-1: S1(1) = S2(1) and S2(-1) = -S1(-1), bit for bit               */
+/* There pi_n = tau_n = n(n+1)/2 (mu = 1) and pi_n = -tau_n = (-1)^(n-1)    */
+/* n(n+1)/2 (mu = -1) are integers, and mist_mie__sums computes them        */
+/* exactly; the recurrence's rounded factors had made S1 and S2 at mu = -1  */
+/* differ by 5.7e-6 relative (x = 8000, m = 1.0001), 1.1e-5 in S1 + S2.     */
+/* Also: the phase table at +-1 (paired and alone) equals mist_mie_phase,  */
+/* and S1(-1) at x = 20000, m = 1.0001 is within test_near_one's bound of   */
+/* the mpmath value (tests/mie_mpmath_ref.py near1: 0.37446931160672328682 */
+/* - 0.32370521746842529205 i).                                             */
+/* ======================================================================== */
+static void test_edge_symmetry(void)
+{
+    static const double cases[][3] = {
+        {8000, 1.0001, 0}, {20000, 1.0001, 0}, {1000, 1.33, 1e-5}, {339.04523060942176,
+        2.8136189359334152, 1e-4}, {0.3, 1.5, 0.1}, {5000, 1.5, 0}, {30, 1000, 0},
+        {100, 1.33, 2}, {1e-9, 1.33, 0}, {0.1, 0.75, 0}, {12345.678, 1.0001, 1e-3},
+    };
+    size_t i, j;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        mist_mie_sphere s = mist_mie_sphere_new(cases[i][0], mist_mie_cplx(cases[i][1], cases[i][2]));
+        mist_mie_complex a, b, c, d;
+        double mu[7] = {1, 0.5, 0.2, 0, -0.2, -0.5, -1}, p[7], q1, q2;
+        double one[1] = {-1}, p1[1];
+        mist_mie_amplitudes(&s, 1, &a, &b);
+        mist_mie_amplitudes(&s, -1, &c, &d);
+        mt_check(s.status == MIST_MIE_OK && a.re == b.re && a.im == b.im,
+                 "S1(1) = S2(1): x=%g m=%g+%gi: %.17g %.17g vs %.17g %.17g", cases[i][0],
+                 cases[i][1], cases[i][2], a.re, a.im, b.re, b.im);
+        mt_check(c.re == -d.re && c.im == -d.im,
+                 "S2(-1) = -S1(-1): x=%g m=%g+%gi: %.17g %.17g vs %.17g %.17g (%.2e)",
+                 cases[i][0], cases[i][1], cases[i][2], c.re, c.im, d.re, d.im,
+                 hypot(c.re + d.re, c.im + d.im) / hypot(c.re, c.im));
+        mist_mie_phase_table(&s, mu, 7, p);
+        mist_mie_phase_table(&s, one, 1, p1);
+        q1 = mist_mie_phase(&s, 1);
+        q2 = mist_mie_phase(&s, -1);
+        mt_check(p[0] == q1 && p[6] == q2 && p1[0] == q2,
+                 "phase table at +-1: x=%g: %.17g %.17g %.17g vs %.17g %.17g", cases[i][0],
+                 p[0], p[6], p1[0], q1, q2);
+        for (j = 1; j < 6; ++j)
+            mt_check(near_rel(p[j], mist_mie_phase(&s, mu[j]), 1e-12),
+                     "phase table: x=%g mu=%g", cases[i][0], mu[j]);
+        if (i == 1) {               /* x = 20000, m = 1.0001: the mpmath S1(-1) */
+            double tol = (1e-13 + 1e-15 / 1e-4) * 0.4945 + 2 * DBL_EPSILON * 20000 * sqrt(20000.0);
+            double e = hypot(c.re - 3.7446931160672328682e-1, c.im + 3.2370521746842529205e-1);
+            mt_check(e <= tol, "S1(-1) at x = 20000: %.3e off (tol %.2e)", e, tol);
+        }
+        mist_mie_sphere_free(&s);
+    }
+}
+
+/* ======================================================================== */
 /* Wiscombe's MIEV0 test driver                                             */
 /* Source: W. Wiscombe, MVTstNew.f, BLOCK DATA CHEKMI ("'correct' answers  */
 /* to test problems", computed on a Cray with 14 digits, printed with 7),   */
@@ -1603,6 +1655,7 @@ int main(void)
     verbose = v && *v && *v != '0';
     test_wiscombe();
     test_series_tail();
+    test_edge_symmetry();
     test_du();
     test_bohren_huffman();
     test_small();
