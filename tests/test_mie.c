@@ -204,6 +204,68 @@ static void test_edge_symmetry(void)
 }
 
 /* ======================================================================== */
+/* mist_mie_average's workspace at the steps of the term count              */
+/* The workspace was sized at xmax = 2 pi n_medium r_max / lambda_min, the  */
+/* spheres made at 2 pi n_medium / lambda r: an ulp apart, and where that   */
+/* ulp crossed a step of mist_mie_workspace_size the average answered       */
+/* ENOMEM with every number 0 (r = 0.8937 um at 0.55 um, n_medium 1.0003,   */
+/* m 1.33; and the size is not monotone: N steps down at x = 4200).  Here:  */
+/* the reported case; radii at 40 steps of the workspace size (the step     */
+/* found by bisection in x, then r = x / k and 8 ulps either side), one     */
+/* and two wavelengths; a table law over x = 4199.99 .. 4200.              */
+/* ======================================================================== */
+static void test_average_steps(void)
+{
+    const double lam = 0.55, nm = 1.0003, k = 2 * PI * nm / lam;
+    mist_mie_wavelength wl[2];
+    mist_mie_dist d;
+    mist_mie_avg a;
+    int step, fails = 0, tries = 0, u;
+    double x0 = 0.5;
+    wl[0] = mist_mie_wl(lam, 1, mist_mie_cplx(1.33, 0));
+    wl[1] = mist_mie_wl(0.45, 1, mist_mie_cplx(1.34, 1e-9));
+    d = mist_mie_dist_mono(0.8937);
+    a = mist_mie_average(&d, wl, 1, nm, NULL, 0, NULL);
+    mt_check(a.status == MIST_MIE_OK && a.c_sca > 0, "average r = 0.8937: status %d, C_sca %g",
+             a.status, a.c_sca);
+    for (step = 0; step < 40; ++step) {
+        /* the next x where the workspace size changes, to the ulp */
+        double lo = x0, hi = x0, r;
+        size_t w0 = mist_mie_workspace_size(lo);
+        while (mist_mie_workspace_size(hi) == w0) hi += 0.25;
+        while (nextafter(lo, hi) < hi) {
+            double mid = lo + (hi - lo) / 2;
+            if (mid <= lo || mid >= hi) break;
+            if (mist_mie_workspace_size(mid) == w0) lo = mid; else hi = mid;
+        }
+        r = hi / k;
+        for (u = -8; u <= 8; ++u) {
+            double rr = r;
+            int t;
+            for (t = 0; t < (u < 0 ? -u : u); ++t) rr = nextafter(rr, u < 0 ? 0 : 1e9);
+            d = mist_mie_dist_mono(rr);
+            a = mist_mie_average(&d, wl, (size_t)(1 + (u & 1)), nm, NULL, 0, NULL);
+            ++tries;
+            if (a.status != MIST_MIE_OK) {
+                if (fails++ < 5)
+                    printf("FAIL: average at a step: r = %.17g (x = %.17g): status %d\n", rr,
+                           rr * k, a.status);
+            }
+        }
+        x0 = hi * 1.25;
+    }
+    mt_check(fails == 0, "average at the steps: %d of %d failed", fails, tries);
+    {   /* N(x) steps down at x = 4200: a node just below needs more */
+        double r[2], w[2] = {1, 1};
+        r[0] = 4199.99 / k; r[1] = 4200 / k;
+        d = mist_mie_dist_table(r, w, 2);
+        a = mist_mie_average(&d, wl, 1, nm, NULL, 0, NULL);
+        mt_check(a.status == MIST_MIE_OK && a.c_sca > 0,
+                 "average over x = 4199.99, 4200: status %d", a.status);
+    }
+}
+
+/* ======================================================================== */
 /* Wiscombe's MIEV0 test driver                                             */
 /* Source: W. Wiscombe, MVTstNew.f, BLOCK DATA CHEKMI ("'correct' answers  */
 /* to test problems", computed on a Cray with 14 digits, printed with 7),   */
@@ -1656,6 +1718,7 @@ int main(void)
     test_wiscombe();
     test_series_tail();
     test_edge_symmetry();
+    test_average_steps();
     test_du();
     test_bohren_huffman();
     test_small();
