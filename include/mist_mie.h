@@ -82,7 +82,8 @@
  * DOMAIN AND BAD INPUT (tested in tests/test_mie.c)
  *   x    in (0, MIST_MIE_X_MAX], finite.  Tiny x is exact (the dipole limit
  *        below 1e-8, where the neglected terms are below 1e-16 relative;
- *        g there is 0: its true value is O(x^2 |m|^2), below 1e-16).
+ *        g there is its leading term, x^2/15 Re((m^2 + 2)(m^2 + 3) /
+ *        (2 m^2 + 3)), 0.16 x^2 at m = 1).
  *   m    mr > 0, mi >= 0, both not NaN, MIST_MIE_M_MIN <= |m| <=
  *        MIST_MIE_M_MAX and |m| x <= MIST_MIE_MX_MAX.  mr = +INFINITY (or mi
  *        = +INFINITY) is the perfectly conducting sphere (mist_mie_conductor).
@@ -462,11 +463,13 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
 /* for the conductor), where every neglected term is below 1e-16 relative  */
 /* and the series would underflow:                                          */
 /*   K = (m^2-1)/(m^2+2), a_1 = -i (2/3) x^3 K, b_1 = 0;                    */
-/*   Q_abs = 4 x Im K, Q_sca = 8/3 x^4 |K|^2, Q_back = 4 x^4 |K|^2, g = 0;  */
+/*   Q_abs = 4 x Im K, Q_sca = 8/3 x^4 |K|^2, Q_back = 4 x^4 |K|^2,         */
+/*   g = x^2/15 Re((m^2 + 2)(m^2 + 3)/(2 m^2 + 3))  (from a_2, b_1);        */
 /*   conductor: a_1 = -i (2/3) x^3, b_1 = i x^3/3, Q_sca = 10/3 x^4,       */
 /*   Q_back = 9 x^4, g = -2/5.                                              */
-/* The coefficients are then stored divided by x^3 (amp_scale_ = x^3); the  */
-/* phase function, a ratio, is unaffected:                                  */
+/* The coefficients are then stored divided by x^3 and scaled by powers of */
+/* 2 to [1/2, 1) (amp_scale_ = x^3 2^k; exact, also for a subnormal m - 1); */
+/* the phase function, a ratio, is unaffected:                              */
 /*   p = (|S1|^2 + |S2|^2) / (4 pi sum (2n+1) (|a_n|^2 + |b_n|^2)).          */
 /*                                                                          */
 /* Stored per term n (6 doubles): c_n a_n, c_n b_n (c_n = (2n+1)/(n(n+1)))  */
@@ -522,7 +525,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     double psi0, psi1, chi0, chi1, sinx, cosx, ix, am;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
-    mist_mie_complex z;
+    mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
@@ -539,7 +542,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     am = pec ? 1 : sqrt(m.re * m.re + m.im * m.im);
     if (x * (am > 1 ? am : 1) < MIST_MIE__X_TINY) {
         mist_mie_complex a1, b1;
-        double x2 = x * x, x4 = x2 * x2, s2;
+        double x2 = x * x, x4 = x2 * x2, s2, cm;
+        int e = 0, e2 = 0;
         if (pec) {
             a1 = mist_mie_cplx(0, -2.0 / 3);
             b1 = mist_mie_cplx(0, 1.0 / 3);
@@ -547,35 +551,49 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             s.q_back = 9 * x4;
             s.g = -0.4;
         } else {
-            mist_mie_complex m2 = mist_mie__mul(m, m), k;
-            k = mist_mie__div(mist_mie_cplx(m2.re - 1, m2.im), mist_mie_cplx(m2.re + 2, m2.im));
-            a1 = mist_mie_cplx(2.0 / 3 * k.im, -2.0 / 3 * k.re);   /* -i 2/3 K */
-            b1 = mist_mie_cplx(0, 0);
-            s.q_abs = m.im > 0 ? 4 * x * k.im : 0;
-            if (s.q_abs < 0) s.q_abs = 0;
-            s.q_sca = 8.0 / 3 * x4 * mist_mie__abs2(k);
-            s.q_ext = s.q_abs + s.q_sca;
-            s.q_back = 4 * x4 * mist_mie__abs2(k);
-            s.g = 0;
-        }
-        {   /* a1, b1 scaled by a power of 2 to [1/2, 1) and the amplitudes
-             * scaled back: exact, but where a1^2 left the range (m = 1 +
-             * 1e-158 i: p_norm_ was +inf, at 1e-165 i 0, with status OK;
-             * an independent check found it; p is their ratio) */
-            double cm = fabs(a1.re), f;
-            int e;
-            if (fabs(a1.im) > cm) cm = fabs(a1.im);
-            if (fabs(b1.re) > cm) cm = fabs(b1.re);
-            if (fabs(b1.im) > cm) cm = fabs(b1.im);
-            e = 0;
+            /* K = (m^2 - 1)/(m^2 + 2) with m^2 - 1 = (m - 1)(m + 1): no
+             * cancellation for m near 1.  m - 1 is first scaled by 2^-e
+             * to [1/2, 1) (exact; a subnormal m - 1 keeps its digits), so
+             * K_s = 2^-e K is normal; the efficiencies carry 2^e, 2^2e. */
+            mist_mie_complex d = mist_mie_cplx(m.re - 1, m.im), k, t;
+            m2 = mist_mie__mul(m, m);
+            cm = fabs(d.re) > fabs(d.im) ? fabs(d.re) : fabs(d.im);
             if (cm > 0) (void)frexp(cm, &e);
-            f = ldexp(1.0, -e);
-            a1 = mist_mie_cplx(a1.re * f, a1.im * f);
-            b1 = mist_mie_cplx(b1.re * f, b1.im * f);
-            mist_mie__store(coef, 1, a1, b1);
-            s.n_terms = 1;
-            s.amp_scale_ = ldexp(x2 * x, e);
+            d = mist_mie_cplx(ldexp(d.re, -e), ldexp(d.im, -e));
+            k = mist_mie__div(mist_mie__mul(d, mist_mie_cplx(m.re + 1, m.im)),
+                              mist_mie_cplx(m2.re + 2, m2.im));
+            a1 = mist_mie_cplx(2.0 / 3 * k.im, -2.0 / 3 * k.re);   /* -i 2/3 K_s */
+            b1 = mist_mie_cplx(0, 0);
+            s.q_abs = m.im > 0 ? ldexp(4 * x * k.im, e) : 0;
+            if (s.q_abs < 0) s.q_abs = 0;
+            s.q_sca = ldexp(8.0 / 3 * x4 * mist_mie__abs2(k), 2 * e);
+            s.q_ext = s.q_abs + s.q_sca;
+            s.q_back = ldexp(4 * x4 * mist_mie__abs2(k), 2 * e);
+            /* g = Re((a_2 + b_1) / a_1) to leading order [BH83 ch. 5:
+             * a_1 = -i 2/3 x^3 (mu-1)/(mu+2), a_2 = -i x^5/15 (mu-1)/(2 mu
+             * + 3), b_1 = -i x^5/45 (mu-1), mu = m^2]:
+             *   g = x^2/15 Re((mu + 2)(mu + 3)/(2 mu + 3))
+             * (0.16 x^2 at m = 1, the Rayleigh-Gans limit); the next
+             * order is O(x^2 |m|^2) = 1e-16 of it here. */
+            t = mist_mie__div(mist_mie__mul(mist_mie_cplx(m2.re + 2, m2.im),
+                                            mist_mie_cplx(m2.re + 3, m2.im)),
+                              mist_mie_cplx(2 * m2.re + 3, 2 * m2.im));
+            s.g = x2 / 15 * t.re;
         }
+        /* a1, b1 scaled by 2^-e2 to [1/2, 1) and the amplitudes scaled
+         * back (amp_scale_ = x^3 2^(e + e2)); p is their ratio.  Each
+         * component by ldexp, not by a factor 2^-e: that factor overflows
+         * for a subnormal coefficient. */
+        cm = fabs(a1.re);
+        if (fabs(a1.im) > cm) cm = fabs(a1.im);
+        if (fabs(b1.re) > cm) cm = fabs(b1.re);
+        if (fabs(b1.im) > cm) cm = fabs(b1.im);
+        if (cm > 0) (void)frexp(cm, &e2);
+        a1 = mist_mie_cplx(ldexp(a1.re, -e2), ldexp(a1.im, -e2));
+        b1 = mist_mie_cplx(ldexp(b1.re, -e2), ldexp(b1.im, -e2));
+        mist_mie__store(coef, 1, a1, b1);
+        s.n_terms = 1;
+        s.amp_scale_ = ldexp(x2 * x, e + e2);
         s2 = 3 * (mist_mie__abs2(a1) + mist_mie__abs2(b1));
         s.p_norm_ = s2 > 0 ? 1 / (4 * MIST_MIE__PI * s2) : 0;
         return s;

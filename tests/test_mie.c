@@ -204,6 +204,56 @@ static void test_edge_symmetry(void)
 }
 
 /* ======================================================================== */
+/* The dipole limit with a subnormal or tiny m - 1                          */
+/* x < 1e-8, m = 1 + dr + i mi with mi down to the smallest subnormal and  */
+/* dr down to one ulp of 1: the coefficients are scaled by powers of 2 (the */
+/* factor 2^-e from frexp of a subnormal overflowed: S and p were NaN with  */
+/* status OK).  p is the dipole's 3 (1 + mu^2) / (16 pi) to 1e-15; the      */
+/* amplitude S1(0) = -i x^3 K (|K| from m - 1, its scale 2^e exact) to     */
+/* 1e-12 where it is a normal double, finite and tiny where not; g =        */
+/* 0.16 x^2 (m -> 1) to 1e-12.                                              */
+/* ======================================================================== */
+static void test_dipole_tiny(void)
+{
+    static const double xs[3] = {1e-9, 3e-12, 1e-150};
+    static const double mis[7] = {0, 1e-308, 2.2e-311, 4.9e-324, 1e-300, 1e-200, 1e-20};
+    static const double drs[4] = {0, 2.220446049250313e-16, -1.1102230246251565e-16, 1e-12};
+    size_t i, j, k, l;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 7; ++j)
+            for (k = 0; k < 4; ++k) {
+                double x = xs[i], mi = mis[j], mr = 1 + drs[k];
+                double mu[5] = {1, 0.5, 0, -0.5, -1}, p[5];
+                double buf[128];
+                mist_mie_sphere s;
+                mist_mie_complex a, b;
+                int bad = 0;
+                if (mi == 0 && drs[k] == 0) continue;           /* m = 1 */
+                s = mist_mie_sphere_make(x, mist_mie_cplx(mr, mi), buf, 128);
+                mist_mie_phase_table(&s, mu, 5, p);
+                for (l = 0; l < 5; ++l) {
+                    double q = mist_mie_phase(&s, mu[l]), want = 3 * (1 + mu[l] * mu[l]) / (16 * PI);
+                    mist_mie_amplitudes(&s, mu[l], &a, &b);
+                    if (!(near_rel(q, want, 1e-15) && near_rel(p[l], want, 1e-15))) bad = 1;
+                    if (!(a.re - a.re == 0 && a.im - a.im == 0 && b.re - b.re == 0
+                          && b.im - b.im == 0)) bad = 1;
+                }
+                mt_check(s.status == MIST_MIE_OK && !bad,
+                         "dipole x=%g m=1%+g+%gi: p %.17g (want %.17g)", x, drs[k], mi,
+                         mist_mie_phase(&s, 0), 3 / (16 * PI));
+                mt_check(near_rel(s.g, 0.16 * x * x, 1e-12) || (x * x < 1e-300 && s.g >= 0),
+                         "dipole x=%g m=1%+g+%gi: g %.17g vs %.17g", x, drs[k], mi, s.g,
+                         0.16 * x * x);
+                if (drs[k] == 0 && x == 1e-9 && mi >= 1e-300) {   /* S1(0) = -i x^3 K, K ~ 2/3 i mi */
+                    mist_mie_amplitudes(&s, 0, &a, &b);
+                    mt_check(near_rel(a.re, 2.0 / 3 * mi * 1e-27, 1e-12) || mi * 1e-27 < 1e-290,
+                             "dipole S1(0) x=%g mi=%g: %.17g vs %.17g", x, mi, a.re,
+                             2.0 / 3 * mi * 1e-27);
+                }
+            }
+}
+
+/* ======================================================================== */
 /* mist_mie_average's workspace at the steps of the term count              */
 /* The workspace was sized at xmax = 2 pi n_medium r_max / lambda_min, the  */
 /* spheres made at 2 pi n_medium / lambda r: an ulp apart, and where that   */
@@ -1718,6 +1768,7 @@ int main(void)
     test_wiscombe();
     test_series_tail();
     test_edge_symmetry();
+    test_dipole_tiny();
     test_average_steps();
     test_du();
     test_bohren_huffman();
