@@ -59,15 +59,26 @@
  *   Q_back, g (relative to max(|g|, 1e-3)) and p(mu) are within 5e-12 up
  *   to x = 1000, 1e-10 at x = 1e4; an independent check of 372 random
  *   cases with |m - 1| > 0.01, x from 1e-6 to 5000: Q and g within 5e-12,
- *   p(mu) within 1.3e-10 (x = 5000).  For m close to 1 the error grows
- *   like 1e-16 / |m - 1| (41 cases: at most 1.1e-13 / |m - 1|); where
- *   |m - 1| x^3 is so small that the coefficients' squares leave the range
- *   (below ~1e-154), the series' Q_sca, g and p are 0 (the dipole limit,
- *   x < 1e-8, scales its coefficients and keeps p exact; before the
- *   seventh session of 2026-11-27 p was +inf there, m = 1 + 1e-158 i,
- *   found by an independent check).  Near mu = +-1 at large x, p moves by
- *   ~x^2/2 times mu's rounding (an independent check: 1.4e-10 at x =
- *   1000, mu = -1 + 2^-53; 7e-13 at mu = +-1 itself).  Cut at N
+ *   p(mu) within 1.3e-10 (x = 5000).
+ *   m close to 1 (test_near_one, 26 mpmath cases): for n > max(x, |m| x)
+ *   the coefficients are computed with m^2 - 1 factored out (see the
+ *   sphere), so at x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g
+ *   itself) and S1, S2 are within 1e-13 relative whatever m - 1 (measured
+ *   at most 1e-15).  At x |m| >= 1 the terms n <= |m| x lose 1/|m - 1| of
+ *   their digits: Q_ext, Q_sca, g and S within 1e-15 / |m - 1| relative
+ *   (measured at most 4e-16 / |m - 1|); and S1, S2 carry the rounding of
+ *   their ~x terms, 2 eps x^(3/2) absolutely (a random walk of N terms up
+ *   to 2n each), which is what Q_back = 4 |S1(-1)|^2 / x^2 and p(mu) near
+ *   180 degrees show where they are small: Q_back within 4 eps sqrt(x /
+ *   Q_back) + 1e-15 / |m - 1| relative (x = 8000, m = 1.0001, Q_back =
+ *   9.8e-11: 1.4e-9 measured, 8e-9 that bound).  Where |m - 1| x^3 is so
+ *   small that the coefficients' squares leave the range (below ~1e-154),
+ *   the series' Q_sca, g and p are 0 (the dipole limit, x < 1e-8, scales
+ *   its coefficients by powers of 2 and keeps p and g exact down to a
+ *   subnormal m - 1).  At mu = +-1 the angle factors are exact integers:
+ *   S1(1) = S2(1) and S2(-1) = -S1(-1) bit for bit.  Near mu = +-1 at
+ *   large x, p moves by ~x^2/2 times mu's rounding (an independent check:
+ *   1.4e-10 at x = 1000, mu = -1 + 2^-53).  Cut at N
  *   itself, as MIEV0 and Du (2004) do (and mist_mie did before the sixth
  *   session of 2026-11-27), the tail stays in the results: Q_back 2e-7 off
  *   at x = 339 and 4200, 6.3e-6 at x = 1e4, m = 1.33 + 1e-5 i (which is
@@ -414,7 +425,9 @@ MIST_MIE_FUNC size_t mist_mie_workspace_size(double x)
 /* The fraction converges once k exceeds about |z|: the cost is O(|z| + N). */
 /* ======================================================================== */
 
-MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
+/* psi_{n-1}(z) / psi_n(z), the continued fraction above (so D_n(z) is it
+ * less n/z, and s_{n-1}(z) = psi_n / (z psi_{n-1}) is 1 / (z times it)). */
+MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
 {
     mist_mie_complex zi = mist_mie__inv(z);
     mist_mie_complex f, c, d, ak, delta;
@@ -432,7 +445,13 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
         f = mist_mie__mul(f, delta);
         if (fabs(delta.re - 1) + fabs(delta.im) < 2 * DBL_EPSILON) break;
     }
-    return mist_mie__sub(f, mist_mie__scale(zi, (double)n));
+    return f;
+}
+
+/* D_n(z) = psi_n'(z) / psi_n(z). */
+MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
+{
+    return mist_mie__sub(mist_mie__ratio(n, z), mist_mie__scale(mist_mie__inv(z), (double)n));
 }
 
 /* ======================================================================== */
@@ -448,6 +467,21 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
 /* section above (positive: psi has no zero for x < n), and the numerators  */
 /* are written psi_n (D_n(mx)/m - D_n(x)), psi_n (m D_n(mx) - D_n(x)),      */
 /* which cancel no n/x.  chi_n grows: upward is stable throughout.          */
+/* For n > max(x, |m| x) even these cancel when m is near 1: m D_n(mx) and */
+/* D_n(x) share their leading n/x, and the difference is O((m^2 - 1) x /   */
+/* n): b_n lost 1/(|m^2 - 1| x^2) of its digits (g 3.1e-7 off at m =       */
+/* 1.0001, x = 0.003; 0.6 at x = 1e-7).  There, with mu = m^2, w = x^2 and */
+/* s_n(z) = psi_{n+1}(z) / (z psi_n(z)) = 1 / (2n+3 - z^2 s_{n+1}(z)) (no  */
+/* zero of psi_n for |z| < n), D_n(z) = (n+1)/z - z s_n(z), so             */
+/*   m D_n(mx) - D_n(x) = x U_n,  U_n = s_n(x) - mu s_n(mx)                 */
+/*     = s_n(x) s_n(mx) (-(2n+3)(mu - 1) - mu w T_{n+1}),                   */
+/*   T_n = s_n(mx) - s_n(x) = w s_n(x) s_n(mx) ((mu - 1) s_{n+1}(mx) + T_{n+1}),*/
+/* downward from the continued fraction's s_{C+1} (T's starting error       */
+/* shrinks by w s s < 1 a step); mu - 1 = (m - 1)(m + 1).  Every term      */
+/* carries the factor mu - 1: no cancellation, a few eps a term whatever   */
+/* m - 1.  a_n's numerator is then psi_n (x U_n - (mu - 1) D_n(x)) / mu,    */
+/* and the denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}). */
+/* Below n = max(x, |m| x) the loss of 1/|m - 1| remains (see ACCURACY).   */
 /* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
 /* b_n = psi_n / xi_n (the m -> infinity limit of the same formulas).       */
 /*                                                                          */
@@ -520,7 +554,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1;
+    int pec, nt, nw, n, n1, n2;
     double *coef, *dm, *dx;
     double psi0, psi1, chi0, chi1, sinx, cosx, ix, am;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
@@ -635,6 +669,32 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         }
     }
 
+    /* n > max(x, |m| x): U_n = (m D_n(mx) - D_n(x)) / x, see above */
+    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
+    if (!pec && n2 <= nt) {
+        mist_mie_complex zw = mist_mie__mul(z, z), smn, tn, f;
+        double w = x * x, sxn;
+        m2 = mist_mie__mul(m, m);
+        mu1 = mist_mie__mul(mist_mie_cplx(m.re - 1, m.im), mist_mie_cplx(m.re + 1, m.im));
+        sxn = 1 / (x * mist_mie__ratio(nt + 2, mist_mie_cplx(x, 0)).re);   /* s_{nt+1}(x) */
+        f = mist_mie__ratio(nt + 2, z);
+        smn = mist_mie__inv(mist_mie__mul(z, f));                          /* s_{nt+1}(mx) */
+        tn = mist_mie_cplx(smn.re - sxn, smn.im);                          /* T_{nt+1} */
+        for (n = nt; n >= n2; --n) {
+            double an = 2.0 * n + 3, sx = 1 / (an - w * sxn);
+            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - (zw.re * smn.re - zw.im * smn.im),
+                                                              -(zw.re * smn.im + zw.im * smn.re)));
+            mist_mie_complex pr = mist_mie__scale(sm, sx), u;
+            /* U_n = s s' (-(2n+3)(mu-1) - mu x^2 T_{n+1}) */
+            u = mist_mie__mul(pr, mist_mie__sub(mist_mie__scale(mu1, -an),
+                                                mist_mie__scale(mist_mie__mul(m2, tn), w)));
+            /* T_n = x^2 s s' ((mu-1) s_{n+1}(mx) + T_{n+1}) */
+            tn = mist_mie__scale(mist_mie__mul(pr, mist_mie__add(mist_mie__mul(mu1, smn), tn)), w);
+            dm[2 * n] = u.re; dm[2 * n + 1] = u.im;
+            sxn = sx; smn = sm;
+        }
+    }
+
     sinx = sin(x); cosx = cos(x);
     psi0 = cosx; psi1 = sinx;                   /* psi_{-1}, psi_0 */
     chi0 = -sinx; chi1 = cosx;                  /* chi_{-1}, chi_0 */
@@ -647,6 +707,23 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         xin = mist_mie_cplx(psi, -chi);
         xim = mist_mie_cplx(psi1, -chi1);
         if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
+        if (!pec && n >= n2) {
+            /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
+             * (x U_n - (mu - 1) D_n(x)) / mu.  The denominators T xi_n -
+             * xi_{n-1} = num - i (T chi_n - chi_{n-1}), as T psi_n -
+             * psi_{n-1} = num. */
+            mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
+            double dn = dx[n];
+            qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
+            num = mist_mie__scale(qa, psi);
+            t = mist_mie_cplx(qa.re + dn + nx, qa.im);
+            a = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
+                                                 num.im - (t.re * chi - chi1)));
+            num = mist_mie__scale(dl, psi);
+            t = mist_mie_cplx(dl.re + dn + nx, dl.im);
+            b = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
+                                                 num.im - (t.re * chi - chi1)));
+        } else {
         {   /* a_n */
             mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
             mist_mie_complex ta = mist_mie_cplx(qa.re + nx, qa.im), num, den;
@@ -668,6 +745,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                 num = mist_mie__scale(mist_mie_cplx(qb.re - dx[n], qb.im), psi);
             den = mist_mie__sub(mist_mie__mul(tb, xin), xim);
             b = (den.re == 0 && den.im == 0) ? mist_mie_cplx(0, 0) : mist_mie__div(num, den);
+        }
         }
         mist_mie__store(coef + 6 * (size_t)(n - 1), n, a, b);
 
