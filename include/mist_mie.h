@@ -425,8 +425,9 @@ MIST_MIE_FUNC size_t mist_mie_workspace_size(double x)
 /* The fraction converges once k exceeds about |z|: the cost is O(|z| + N). */
 /* ======================================================================== */
 
-/* psi_{n-1}(z) / psi_n(z), the continued fraction above (so D_n(z) is it
- * less n/z, and s_{n-1}(z) = psi_n / (z psi_{n-1}) is 1 / (z times it)). */
+/* psi_{n-1}(z) / psi_n(z), the continued fraction above: D_n(z) is it less
+ * n/z.  The sphere takes it at n = C + 1 (C the most terms): D_C(z) =
+ * (C + 1)/z - 1/it and s_C(z) = psi_{C+1} / (z psi_C) = 1 / (z it). */
 MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
 {
     mist_mie_complex zi = mist_mie__inv(z);
@@ -448,11 +449,6 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
     return f;
 }
 
-/* D_n(z) = psi_n'(z) / psi_n(z). */
-MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
-{
-    return mist_mie__sub(mist_mie__ratio(n, z), mist_mie__scale(mist_mie__inv(z), (double)n));
-}
 
 /* ======================================================================== */
 /* The sphere: Mie coefficients a_n, b_n and efficiencies                   */
@@ -475,11 +471,12 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
 /* zero of psi_n for |z| < n), D_n(z) = (n+1)/z - z s_n(z), so             */
 /*   m D_n(mx) - D_n(x) = x U_n,  U_n = s_n(x) - mu s_n(mx)                 */
 /*     = s_n(x) s_n(mx) (-(2n+3)(mu - 1) - mu w T_{n+1}),                   */
-/*   T_n = s_n(mx) - s_n(x) = w s_n(x) s_n(mx) ((mu - 1) s_{n+1}(mx) + T_{n+1}),*/
-/* downward from the continued fraction's s_{C+1} (T's starting error       */
-/* shrinks by w s s < 1 a step); mu - 1 = (m - 1)(m + 1).  Every term      */
-/* carries the factor mu - 1: no cancellation, a few eps a term whatever   */
-/* m - 1.  a_n's numerator is then psi_n (x U_n - (mu - 1) D_n(x)) / mu,    */
+/*   T_n = s_n(mx) - s_n(x)                                                 */
+/*       = w s_n(x) s_n(mx) ((mu - 1) s_{n+1}(mx) + T_{n+1}),               */
+/* downward from the continued fraction's s_C (C the most terms; T's       */
+/* starting error shrinks by w s s < 1 a step); mu - 1 = (m - 1)(m + 1).   */
+/* Every term carries the factor mu - 1: no cancellation, a few eps a term */
+/* whatever m - 1.  a_n's numerator is psi_n (x U_n - (mu - 1) D_n(x)) / mu,*/
 /* and the denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}). */
 /* Below n = max(x, |m| x) the loss of 1/|m - 1| remains (see ACCURACY).   */
 /* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
@@ -556,10 +553,10 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     mist_mie_sphere s;
     int pec, nt, nw, n, n1, n2;
     double *coef, *dm, *dx;
-    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am;
+    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
-    mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1;
+    mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
@@ -646,8 +643,12 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     dx = work + 8 * ((size_t)nt + 1);          /* D_n(x) for n > x          */
     ix = 1 / x;
     z = mist_mie__scale(m, x);
+    /* the fractions at nt + 1: psi_nt / psi_{nt+1} = 1 / (z s_nt(z)), and
+     * D_nt(z) = (nt + 1)/z - z s_nt(z) (see the sphere) */
     if (!pec) {
-        mist_mie_complex d = mist_mie__lentz(nt, z), zi = mist_mie__inv(z);
+        mist_mie_complex d, zi = mist_mie__inv(z);
+        fz = mist_mie__ratio(nt + 1, z);
+        d = mist_mie__sub(mist_mie__scale(zi, nt + 1.0), mist_mie__inv(fz));
         dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
         for (n = nt; n > 1; --n) {
             mist_mie_complex nz = mist_mie__scale(zi, (double)n);
@@ -659,7 +660,9 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
      * the indices of dx[] below, in every build) */
     n1 = (int)mist_mie__clampl(floor(x), 0, nt) + 1;
     if (n1 <= nt) {
-        double d = mist_mie__lentz(nt, mist_mie_cplx(x, 0)).re;
+        double d;
+        fx = mist_mie__ratio(nt + 1, mist_mie_cplx(x, 0)).re;     /* > 0: nt > x */
+        d = (nt + 1) * ix - 1 / fx;
         dx[nt] = d;
         for (n = nt; n > n1; --n) {
             double den = d + n * ix;
@@ -672,26 +675,28 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     /* n > max(x, |m| x): U_n = (m D_n(mx) - D_n(x)) / x, see above */
     n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
     if (!pec && n2 <= nt) {
-        mist_mie_complex zw = mist_mie__mul(z, z), smn, tn, f;
-        double w = x * x, sxn;
+        mist_mie_complex zw = mist_mie__mul(z, z), smp, tp, u;
+        double w = x * x, sxp = 1 / (x * fx);                     /* s_nt(x) */
         m2 = mist_mie__mul(m, m);
         mu1 = mist_mie__mul(mist_mie_cplx(m.re - 1, m.im), mist_mie_cplx(m.re + 1, m.im));
-        sxn = 1 / (x * mist_mie__ratio(nt + 2, mist_mie_cplx(x, 0)).re);   /* s_{nt+1}(x) */
-        f = mist_mie__ratio(nt + 2, z);
-        smn = mist_mie__inv(mist_mie__mul(z, f));                          /* s_{nt+1}(mx) */
-        tn = mist_mie_cplx(smn.re - sxn, smn.im);                          /* T_{nt+1} */
-        for (n = nt; n >= n2; --n) {
-            double an = 2.0 * n + 3, sx = 1 / (an - w * sxn);
-            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - (zw.re * smn.re - zw.im * smn.im),
-                                                              -(zw.re * smn.im + zw.im * smn.re)));
-            mist_mie_complex pr = mist_mie__scale(sm, sx), u;
+        smp = mist_mie__inv(mist_mie__mul(z, fz));                  /* s_nt(mx) */
+        /* the top term by the differences (it is past the tail; T's
+         * starting error shrinks by x^2 s s' a step below) */
+        tp = mist_mie_cplx(smp.re - sxp, smp.im);
+        u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+        dm[2 * nt] = u.re; dm[2 * nt + 1] = u.im;
+        for (n = nt - 1; n >= n2; --n) {
+            double an = 2.0 * n + 3, sx = 1 / (an - w * sxp);
+            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - (zw.re * smp.re - zw.im * smp.im),
+                                                              -(zw.re * smp.im + zw.im * smp.re)));
+            mist_mie_complex pr = mist_mie__scale(sm, sx);
             /* U_n = s s' (-(2n+3)(mu-1) - mu x^2 T_{n+1}) */
             u = mist_mie__mul(pr, mist_mie__sub(mist_mie__scale(mu1, -an),
-                                                mist_mie__scale(mist_mie__mul(m2, tn), w)));
+                                                mist_mie__scale(mist_mie__mul(m2, tp), w)));
             /* T_n = x^2 s s' ((mu-1) s_{n+1}(mx) + T_{n+1}) */
-            tn = mist_mie__scale(mist_mie__mul(pr, mist_mie__add(mist_mie__mul(mu1, smn), tn)), w);
+            tp = mist_mie__scale(mist_mie__mul(pr, mist_mie__add(mist_mie__mul(mu1, smp), tp)), w);
             dm[2 * n] = u.re; dm[2 * n + 1] = u.im;
-            sxn = sx; smn = sm;
+            sxp = sx; smp = sm;
         }
     }
 
