@@ -16,7 +16,14 @@
  * through a volatile, so the compiler cannot see them.  A hang is caught by
  * ctest's TIMEOUT (the whole run takes well under a second).
  * Negative control: a deliberate write one past the workspace is detected
- * by the same canary check. */
+ * by the same canary check.
+ * Also mist.h, where the same pattern (a count or an index from a double)
+ * appears: the height fog's exponential in 2^n parts (n doubled until
+ * xh / n is in exp's range: with xh = NaN under these flags n overflowed
+ * and the loop never ended: mist_hfog_eval with NaN, inf and huge
+ * parameters) and the prepared Draine sampler's table index (NaN and inf
+ * xi; ASan checks the reads). */
+#include "mist.h"
 #include "mist_mie.h"
 #include "mist_test.h"
 
@@ -184,6 +191,43 @@ int main(void)
                      guards_ok(ph, 5));
             free(ph);
         }
+
+    /* mist.h: the height fog and the prepared sampler with bad values */
+    for (i = 0; i < nv; ++i)
+        for (j = 0; j < nv; ++j)
+            for (k = 0; k < 6; ++k) {
+                mist_hfog f;
+                mist_vec3 o = {0, 1, 0}, d = {0.6, 0.8, 0};
+                mist_rgb t, sc;
+                double len = 10;
+                memset(&f, 0, sizeof f);
+                f.density = 1; f.scale_height = 2;
+                f.rayleigh_scat.r = f.rayleigh_scat.g = f.rayleigh_scat.b = 0.01;
+                f.rayleigh_ext = f.rayleigh_scat; f.mie_scat = f.rayleigh_scat;
+                f.mie_ext = f.rayleigh_scat;
+                f.mie_phase = mist_fog_make(0.8, 0.5, 0.9, 0.3);
+                f.sun_dir.y = 1; f.sun.r = f.sun.g = f.sun.b = 1; f.ambient = f.sun;
+                f.sun_extinction = 1;
+                switch (k) {
+                case 0: f.density = vals[i]; f.scale_height = vals[j]; break;
+                case 1: o.y = vals[i]; d.y = vals[j]; break;
+                case 2: len = vals[i]; f.base = vals[j]; break;
+                case 3: f.mie_ext.r = vals[i]; f.rayleigh_ext.g = vals[j]; break;
+                case 4: d.x = vals[i]; o.x = vals[j]; break;
+                default: f.sun_dir.x = vals[i]; f.scale_height = vals[j]; break;
+                }
+                mist_hfog_eval(&f, o, d, len, &t, &sc);
+                ++calls;
+            }
+    {
+        mist_phase ph = mist_phase_draine(0.7, 0.5);
+        double in[64], out[64];
+        for (i = 0; i < 64; ++i) in[i] = vals[i % nv];
+        for (i = 0; i < nv; ++i) (void)mist_phase_sample(&ph, vals[i]);
+        mist_phase_sample_n(&ph, in, out, 64);
+        calls += (int)nv + 64;
+    }
+    mt_check(1, "mist.h: returned");
 
     /* negative control: the canary check sees a write one past the end */
     buf[GUARD + nbuf] = 0;
