@@ -687,14 +687,15 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         dm[2 * nt] = u.re; dm[2 * nt + 1] = u.im;
         for (n = nt - 1; n >= n2; --n) {
             double an = 2.0 * n + 3, sx = 1 / (an - w * sxp);
-            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - (zw.re * smp.re - zw.im * smp.im),
-                                                              -(zw.re * smp.im + zw.im * smp.re)));
+            mist_mie_complex zs = mist_mie__mul(zw, smp);
+            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - zs.re, -zs.im));
             mist_mie_complex pr = mist_mie__scale(sm, sx);
             /* U_n = s s' (-(2n+3)(mu-1) - mu x^2 T_{n+1}) */
             u = mist_mie__mul(pr, mist_mie__sub(mist_mie__scale(mu1, -an),
                                                 mist_mie__scale(mist_mie__mul(m2, tp), w)));
             /* T_n = x^2 s s' ((mu-1) s_{n+1}(mx) + T_{n+1}) */
-            tp = mist_mie__scale(mist_mie__mul(pr, mist_mie__add(mist_mie__mul(mu1, smp), tp)), w);
+            tp = mist_mie__add(mist_mie__mul(mu1, smp), tp);
+            tp = mist_mie__scale(mist_mie__mul(pr, tp), w);
             dm[2 * n] = u.re; dm[2 * n + 1] = u.im;
             sxp = sx; smp = sm;
         }
