@@ -5,10 +5,14 @@
  *   - Du (2004), Table 1 (Q_ext, Q_sca) and Table 2 (S1 at 0 and 180 deg);
  *   - Bohren & Huffman's Appendix A example (efficiencies and the S11, POL,
  *     S33, S34 table) and two further cases computed by miepython;
+ *   - m close to 1 (small x, x to 20000, the dipole limit) against an
+ *     mpmath series, with negative controls; S1(1) = S2(1), S2(-1) =
+ *     -S1(-1) exactly; the dipole limit with a subnormal m - 1;
  *   - the small-particle limits; normalisation and mean cosine of the phase
  *     function by quadrature; no NaN or overflow up to x = 1e4 (and 1e5);
  *   - size-distribution averages against an independent trapezoid rule and
- *     closed-form moments; wavelength averages; water's index table;
+ *     closed-form moments; wavelength averages; water's index table; the
+ *     averages' workspace at the steps of the term count;
  *   - bad input gets the documented result;
  *   - the benchmark's workload (1800 angles x 3 wavelengths, one droplet of
  *     10 and 50 um) gives a valid average; its speed is the benchmark's.
