@@ -3573,7 +3573,12 @@ MIST__F MIST__T MIST__FN(mist__expmul_s)(MIST__T c1, MIST__T c2, MIST__T c3, MIS
     x = xh - (MIST__T)k * MIST__C(0.693147180559945309);
     if (x > MIST__C(64) * MIST__XLIM) return MIST__C(0);
     if (x < MIST__C(-64) * MIST__XLIM) return (MIST__T)INFINITY;
-    for (n = 1; !(xh / (MIST__T)n < MIST__XLIM && xh / (MIST__T)n > -MIST__XLIM); n *= 2) {}
+    /* n bounded in integers: a NaN xh meets only the tests above, which
+     * -ffinite-math-only may delete (MIST_ALLOW_FAST_MATH): n then doubled
+     * past INT_MAX, an endless loop.  Finite input past them needs n <= 128
+     * (|xh| <= 64 XLIM + |k| ln 2 < 128 XLIM). */
+    for (n = 1; n < 4096 && !(xh / (MIST__T)n < MIST__XLIM && xh / (MIST__T)n > -MIST__XLIM);
+         n *= 2) {}
     e = MIST__M(exp)(-xh / (MIST__T)n);
     r = MIST__FN(mist__frexp)(p * (MIST__C(1) - xl), &i);
     k += i;

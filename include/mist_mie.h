@@ -59,15 +59,26 @@
  *   Q_back, g (relative to max(|g|, 1e-3)) and p(mu) are within 5e-12 up
  *   to x = 1000, 1e-10 at x = 1e4; an independent check of 372 random
  *   cases with |m - 1| > 0.01, x from 1e-6 to 5000: Q and g within 5e-12,
- *   p(mu) within 1.3e-10 (x = 5000).  For m close to 1 the error grows
- *   like 1e-16 / |m - 1| (41 cases: at most 1.1e-13 / |m - 1|); where
- *   |m - 1| x^3 is so small that the coefficients' squares leave the range
- *   (below ~1e-154), the series' Q_sca, g and p are 0 (the dipole limit,
- *   x < 1e-8, scales its coefficients and keeps p exact; before the
- *   seventh session of 2026-11-27 p was +inf there, m = 1 + 1e-158 i,
- *   found by an independent check).  Near mu = +-1 at large x, p moves by
- *   ~x^2/2 times mu's rounding (an independent check: 1.4e-10 at x =
- *   1000, mu = -1 + 2^-53; 7e-13 at mu = +-1 itself).  Cut at N
+ *   p(mu) within 1.3e-10 (x = 5000).
+ *   m close to 1 (test_near_one, 26 mpmath cases): for n > max(x, |m| x)
+ *   the coefficients are computed with m^2 - 1 factored out (see the
+ *   sphere), so at x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g
+ *   itself) and S1, S2 are within 1e-13 relative whatever m - 1 (measured
+ *   at most 1e-15).  At x |m| >= 1 the terms n <= |m| x lose 1/|m - 1| of
+ *   their digits: Q_ext, Q_sca, g and S within 1e-15 / |m - 1| relative
+ *   (measured at most 4e-16 / |m - 1|); and S1, S2 carry the rounding of
+ *   their ~x terms, 2 eps x^(3/2) absolutely (a random walk of N terms up
+ *   to 2n each), which is what Q_back = 4 |S1(-1)|^2 / x^2 and p(mu) near
+ *   180 degrees show where they are small: Q_back within 4 eps sqrt(x /
+ *   Q_back) + 1e-15 / |m - 1| relative (x = 8000, m = 1.0001, Q_back =
+ *   9.8e-11: 1.4e-9 measured, 8e-9 that bound).  Where |m - 1| x^3 is so
+ *   small that the coefficients' squares leave the range (below ~1e-154),
+ *   the series' Q_sca, g and p are 0 (the dipole limit, x < 1e-8, scales
+ *   its coefficients by powers of 2 and keeps p and g exact down to a
+ *   subnormal m - 1).  At mu = +-1 the angle factors are exact integers:
+ *   S1(1) = S2(1) and S2(-1) = -S1(-1) bit for bit.  Near mu = +-1 at
+ *   large x, p moves by ~x^2/2 times mu's rounding (an independent check:
+ *   1.4e-10 at x = 1000, mu = -1 + 2^-53).  Cut at N
  *   itself, as MIEV0 and Du (2004) do (and mist_mie did before the sixth
  *   session of 2026-11-27), the tail stays in the results: Q_back 2e-7 off
  *   at x = 339 and 4200, 6.3e-6 at x = 1e4, m = 1.33 + 1e-5 i (which is
@@ -82,7 +93,8 @@
  * DOMAIN AND BAD INPUT (tested in tests/test_mie.c)
  *   x    in (0, MIST_MIE_X_MAX], finite.  Tiny x is exact (the dipole limit
  *        below 1e-8, where the neglected terms are below 1e-16 relative;
- *        g there is 0: its true value is O(x^2 |m|^2), below 1e-16).
+ *        g there is its leading term, x^2/15 Re((m^2 + 2)(m^2 + 3) /
+ *        (2 m^2 + 3)), 0.16 x^2 at m = 1).
  *   m    mr > 0, mi >= 0, both not NaN, MIST_MIE_M_MIN <= |m| <=
  *        MIST_MIE_M_MAX and |m| x <= MIST_MIE_MX_MAX.  mr = +INFINITY (or mi
  *        = +INFINITY) is the perfectly conducting sphere (mist_mie_conductor).
@@ -94,7 +106,10 @@
  *   Bad x or m: the sphere has status MIST_MIE_EDOMAIN and every number in
  *   it is 0; every function given such a sphere returns 0.  Finite valid
  *   input never gives NaN or infinity.  No function ever reads or writes
- *   outside the memory it was given.
+ *   outside the memory it was given, nor loops without end, in any build:
+ *   also with MIST_ALLOW_FAST_MATH under -ffast-math (which may delete
+ *   NaN tests), every size, index and loop count derived from a double is
+ *   checked on its bits and bounded in integers (test_mie_fastmath).
  *
  * REFERENCES (section by section below)
  *   [BH83] C. Bohren, D. Huffman, "Absorption and Scattering of Light by
@@ -132,7 +147,9 @@
 #include <math.h>
 #include <float.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The fast-math guard of mist.h (see FAST MATH there; MIST_ALLOW_FAST_MATH
  * turns it off): without it gcc -ffast-math drops the NaN tests and
@@ -313,6 +330,39 @@ MIST_MIE_FUNC MIST_MIE__HOT mist_mie_complex mist_mie__inv(mist_mie_complex b)
     return mist_mie__div(mist_mie_cplx(1, 0), b);
 }
 
+/* The exponent field of v (2047: inf or NaN), read from its bits.  The
+ * compiler may assume under -ffinite-math-only (MIST_ALLOW_FAST_MATH with
+ * -ffast-math) that no double is NaN or infinite and delete v != v and the
+ * comparisons a NaN fails; it cannot delete a test of the bits.  Every
+ * check that guards a size, an index or a loop count is made this way:
+ * the opt-out may give wrong numbers, never a write outside the memory
+ * mist was given or an endless loop. */
+MIST_MIE_FUNC int mist_mie__expo(double v)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    return (int)((b >> 52) & 2047u);
+}
+
+/* v is NaN (by its bits). */
+MIST_MIE_FUNC int mist_mie__isnan(double v)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    return (b & ~((uint64_t)1 << 63)) > ((uint64_t)2047 << 52);
+}
+
+/* v as an integer, clamped to [lo, hi] (lo for NaN): the conversion of a
+ * NaN or out-of-range double to an integer is undefined, so it is checked
+ * on the bits first; finite comparisons hold under every flag. */
+MIST_MIE_FUNC long mist_mie__clampl(double v, long lo, long hi)
+{
+    if (mist_mie__expo(v) == 2047) return mist_mie__isnan(v) || v < 0 ? lo : hi;
+    if (v <= (double)lo) return lo;
+    if (v >= (double)hi) return hi;
+    return (long)v;
+}
+
 /* ======================================================================== */
 /* Number of terms  [W80 p. 1508, W79 eq. R50]                              */
 /*   N = x + 4 x^(1/3) + 1      x <= 8                                      */
@@ -322,14 +372,14 @@ MIST_MIE_FUNC MIST_MIE__HOT mist_mie_complex mist_mie__inv(mist_mie_complex b)
 /* ======================================================================== */
 
 /* Wiscombe's N(x).  Domain: x in (0, MIST_MIE_X_MAX]; else 0. */
+#define MIST_MIE__N_MAX 100300      /* N(MIST_MIE_X_MAX) = 100188, a bound */
 MIST_MIE_FUNC int mist_mie_terms(double x)
 {
     double c;
-    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
+    if (mist_mie__expo(x) == 2047 || !(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
     c = pow(x, 1.0 / 3.0);
-    if (x <= 8) return (int)(x + 4 * c + 1);
-    if (x < 4200) return (int)(x + 4.05 * c + 2);
-    return (int)(x + 4 * c + 2);
+    c = x <= 8 ? x + 4 * c + 1 : x < 4200 ? x + 4.05 * c + 2 : x + 4 * c + 2;
+    return (int)mist_mie__clampl(c, 1, MIST_MIE__N_MAX);
 }
 
 /* The terms summed: from Wiscombe's N on, until a term is below 1e-18 of
@@ -345,7 +395,7 @@ MIST_MIE_FUNC int mist_mie_terms(double x)
 MIST_MIE_FUNC int mist_mie__cap(double x)
 {
     int n = mist_mie_terms(x);
-    return n > 0 ? n + (int)(4 * pow(x, 1.0 / 3.0)) + 8 : 0;
+    return n > 0 ? n + (int)mist_mie__clampl(4 * pow(x, 1.0 / 3.0), 0, 200) + 8 : 0;
 }
 #define MIST_MIE__TAIL 1e-36          /* (term / largest term)^2 that stops */
 
@@ -375,12 +425,15 @@ MIST_MIE_FUNC size_t mist_mie_workspace_size(double x)
 /* The fraction converges once k exceeds about |z|: the cost is O(|z| + N). */
 /* ======================================================================== */
 
-MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
+/* psi_{n-1}(z) / psi_n(z), the continued fraction above: D_n(z) is it less
+ * n/z.  The sphere takes it at n = C + 1 (C the most terms): D_C(z) =
+ * (C + 1)/z - 1/it and s_C(z) = psi_{C+1} / (z psi_C) = 1 / (z it). */
+MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
 {
     mist_mie_complex zi = mist_mie__inv(z);
     mist_mie_complex f, c, d, ak, delta;
     double az = sqrt(mist_mie__abs2(z));
-    long k, kmax = (long)(4 * az) + 4L * n + 1000;
+    long k, kmax = mist_mie__clampl(4 * az, 0, 4 * (long)MIST_MIE_MX_MAX) + 4L * n + 1000;
     double sgn = -1;
     f = c = mist_mie__scale(zi, 2.0 * n + 1);          /* a_1 */
     d = mist_mie_cplx(0, 0);
@@ -393,8 +446,9 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
         f = mist_mie__mul(f, delta);
         if (fabs(delta.re - 1) + fabs(delta.im) < 2 * DBL_EPSILON) break;
     }
-    return mist_mie__sub(f, mist_mie__scale(zi, (double)n));
+    return f;
 }
+
 
 /* ======================================================================== */
 /* The sphere: Mie coefficients a_n, b_n and efficiencies                   */
@@ -409,6 +463,22 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
 /* section above (positive: psi has no zero for x < n), and the numerators  */
 /* are written psi_n (D_n(mx)/m - D_n(x)), psi_n (m D_n(mx) - D_n(x)),      */
 /* which cancel no n/x.  chi_n grows: upward is stable throughout.          */
+/* For n > max(x, |m| x) even these cancel when m is near 1: m D_n(mx) and */
+/* D_n(x) share their leading n/x, and the difference is O((m^2 - 1) x /   */
+/* n): b_n lost 1/(|m^2 - 1| x^2) of its digits (g 3.1e-7 off at m =       */
+/* 1.0001, x = 0.003; 0.6 at x = 1e-7).  There, with mu = m^2, w = x^2 and */
+/* s_n(z) = psi_{n+1}(z) / (z psi_n(z)) = 1 / (2n+3 - z^2 s_{n+1}(z)) (no  */
+/* zero of psi_n for |z| < n), D_n(z) = (n+1)/z - z s_n(z), so             */
+/*   m D_n(mx) - D_n(x) = x U_n,  U_n = s_n(x) - mu s_n(mx)                 */
+/*     = s_n(x) s_n(mx) (-(2n+3)(mu - 1) - mu w T_{n+1}),                   */
+/*   T_n = s_n(mx) - s_n(x)                                                 */
+/*       = w s_n(x) s_n(mx) ((mu - 1) s_{n+1}(mx) + T_{n+1}),               */
+/* downward from the continued fraction's s_C (C the most terms; T's       */
+/* starting error shrinks by w s s < 1 a step); mu - 1 = (m - 1)(m + 1).   */
+/* Every term carries the factor mu - 1: no cancellation, a few eps a term */
+/* whatever m - 1.  a_n's numerator is psi_n (x U_n - (mu - 1) D_n(x)) / mu,*/
+/* and the denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}). */
+/* Below n = max(x, |m| x) the loss of 1/|m - 1| remains (see ACCURACY).   */
 /* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
 /* b_n = psi_n / xi_n (the m -> infinity limit of the same formulas).       */
 /*                                                                          */
@@ -424,11 +494,13 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__lentz(int n, mist_mie_complex z)
 /* for the conductor), where every neglected term is below 1e-16 relative  */
 /* and the series would underflow:                                          */
 /*   K = (m^2-1)/(m^2+2), a_1 = -i (2/3) x^3 K, b_1 = 0;                    */
-/*   Q_abs = 4 x Im K, Q_sca = 8/3 x^4 |K|^2, Q_back = 4 x^4 |K|^2, g = 0;  */
+/*   Q_abs = 4 x Im K, Q_sca = 8/3 x^4 |K|^2, Q_back = 4 x^4 |K|^2,         */
+/*   g = x^2/15 Re((m^2 + 2)(m^2 + 3)/(2 m^2 + 3))  (from a_2, b_1);        */
 /*   conductor: a_1 = -i (2/3) x^3, b_1 = i x^3/3, Q_sca = 10/3 x^4,       */
 /*   Q_back = 9 x^4, g = -2/5.                                              */
-/* The coefficients are then stored divided by x^3 (amp_scale_ = x^3); the  */
-/* phase function, a ratio, is unaffected:                                  */
+/* The coefficients are then stored divided by x^3 and scaled by powers of */
+/* 2 to [1/2, 1) (amp_scale_ = x^3 2^k; exact, also for a subnormal m - 1); */
+/* the phase function, a ratio, is unaffected:                              */
 /*   p = (|S1|^2 + |S2|^2) / (4 pi sum (2n+1) (|a_n|^2 + |b_n|^2)).          */
 /*                                                                          */
 /* Stored per term n (6 doubles): c_n a_n, c_n b_n (c_n = (2n+1)/(n(n+1)))  */
@@ -441,10 +513,10 @@ MIST_MIE_FUNC int mist_mie__valid(double x, mist_mie_complex m, int *pec)
 {
     double am;
     *pec = 0;
-    if (!(x > 0 && x <= MIST_MIE_X_MAX)) return 0;           /* also NaN */
-    if (m.re != m.re || m.im != m.im) return 0;
+    if (mist_mie__expo(x) == 2047 || !(x > 0 && x <= MIST_MIE_X_MAX)) return 0;
+    if (mist_mie__isnan(m.re) || mist_mie__isnan(m.im)) return 0;
     if (!(m.re > 0) || !(m.im >= 0)) return 0;
-    if (m.re == (double)INFINITY || m.im == (double)INFINITY) { *pec = 1; return 1; }
+    if (mist_mie__expo(m.re) == 2047 || mist_mie__expo(m.im) == 2047) { *pec = 1; return 1; }
     am = sqrt(m.re * m.re + m.im * m.im);
     if (!(am >= MIST_MIE_M_MIN && am <= MIST_MIE_M_MAX)) return 0;
     if (!(am * x <= MIST_MIE_MX_MAX)) return 0;
@@ -479,17 +551,19 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1;
+    int pec, nt, nw, n, n1, n2;
     double *coef, *dm, *dx;
-    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am;
+    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
-    mist_mie_complex z;
+    mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
     nw = mist_mie_terms(x);                     /* the fewest: Wiscombe's N */
-    if (!work || n_work < mist_mie_workspace_size(x))
+    if (nt <= 0 || nw <= 0) return mist_mie__zero(MIST_MIE_EDOMAIN);
+    /* the size checked here is the one the indices below use: 9 (nt + 1) */
+    if (!work || n_work / 9 < (size_t)nt + 1)
         return mist_mie__zero(MIST_MIE_ENOMEM);
     s = mist_mie__zero(MIST_MIE_OK);
     s.x = x; s.m = m; s.coef_ = work; s.amp_scale_ = 1;
@@ -499,7 +573,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     am = pec ? 1 : sqrt(m.re * m.re + m.im * m.im);
     if (x * (am > 1 ? am : 1) < MIST_MIE__X_TINY) {
         mist_mie_complex a1, b1;
-        double x2 = x * x, x4 = x2 * x2, s2;
+        double x2 = x * x, x4 = x2 * x2, s2, cm;
+        int e = 0, e2 = 0;
         if (pec) {
             a1 = mist_mie_cplx(0, -2.0 / 3);
             b1 = mist_mie_cplx(0, 1.0 / 3);
@@ -507,35 +582,49 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             s.q_back = 9 * x4;
             s.g = -0.4;
         } else {
-            mist_mie_complex m2 = mist_mie__mul(m, m), k;
-            k = mist_mie__div(mist_mie_cplx(m2.re - 1, m2.im), mist_mie_cplx(m2.re + 2, m2.im));
-            a1 = mist_mie_cplx(2.0 / 3 * k.im, -2.0 / 3 * k.re);   /* -i 2/3 K */
-            b1 = mist_mie_cplx(0, 0);
-            s.q_abs = m.im > 0 ? 4 * x * k.im : 0;
-            if (s.q_abs < 0) s.q_abs = 0;
-            s.q_sca = 8.0 / 3 * x4 * mist_mie__abs2(k);
-            s.q_ext = s.q_abs + s.q_sca;
-            s.q_back = 4 * x4 * mist_mie__abs2(k);
-            s.g = 0;
-        }
-        {   /* a1, b1 scaled by a power of 2 to [1/2, 1) and the amplitudes
-             * scaled back: exact, but where a1^2 left the range (m = 1 +
-             * 1e-158 i: p_norm_ was +inf, at 1e-165 i 0, with status OK;
-             * an independent check found it; p is their ratio) */
-            double cm = fabs(a1.re), f;
-            int e;
-            if (fabs(a1.im) > cm) cm = fabs(a1.im);
-            if (fabs(b1.re) > cm) cm = fabs(b1.re);
-            if (fabs(b1.im) > cm) cm = fabs(b1.im);
-            e = 0;
+            /* K = (m^2 - 1)/(m^2 + 2) with m^2 - 1 = (m - 1)(m + 1): no
+             * cancellation for m near 1.  m - 1 is first scaled by 2^-e
+             * to [1/2, 1) (exact; a subnormal m - 1 keeps its digits), so
+             * K_s = 2^-e K is normal; the efficiencies carry 2^e, 2^2e. */
+            mist_mie_complex d = mist_mie_cplx(m.re - 1, m.im), k, t;
+            m2 = mist_mie__mul(m, m);
+            cm = fabs(d.re) > fabs(d.im) ? fabs(d.re) : fabs(d.im);
             if (cm > 0) (void)frexp(cm, &e);
-            f = ldexp(1.0, -e);
-            a1 = mist_mie_cplx(a1.re * f, a1.im * f);
-            b1 = mist_mie_cplx(b1.re * f, b1.im * f);
-            mist_mie__store(coef, 1, a1, b1);
-            s.n_terms = 1;
-            s.amp_scale_ = ldexp(x2 * x, e);
+            d = mist_mie_cplx(ldexp(d.re, -e), ldexp(d.im, -e));
+            k = mist_mie__div(mist_mie__mul(d, mist_mie_cplx(m.re + 1, m.im)),
+                              mist_mie_cplx(m2.re + 2, m2.im));
+            a1 = mist_mie_cplx(2.0 / 3 * k.im, -2.0 / 3 * k.re);   /* -i 2/3 K_s */
+            b1 = mist_mie_cplx(0, 0);
+            s.q_abs = m.im > 0 ? ldexp(4 * x * k.im, e) : 0;
+            if (s.q_abs < 0) s.q_abs = 0;
+            s.q_sca = ldexp(8.0 / 3 * x4 * mist_mie__abs2(k), 2 * e);
+            s.q_ext = s.q_abs + s.q_sca;
+            s.q_back = ldexp(4 * x4 * mist_mie__abs2(k), 2 * e);
+            /* g = Re((a_2 + b_1) / a_1) to leading order [BH83 ch. 5:
+             * a_1 = -i 2/3 x^3 (mu-1)/(mu+2), a_2 = -i x^5/15 (mu-1)/(2 mu
+             * + 3), b_1 = -i x^5/45 (mu-1), mu = m^2]:
+             *   g = x^2/15 Re((mu + 2)(mu + 3)/(2 mu + 3))
+             * (0.16 x^2 at m = 1, the Rayleigh-Gans limit); the next
+             * order is O(x^2 |m|^2) = 1e-16 of it here. */
+            t = mist_mie__div(mist_mie__mul(mist_mie_cplx(m2.re + 2, m2.im),
+                                            mist_mie_cplx(m2.re + 3, m2.im)),
+                              mist_mie_cplx(2 * m2.re + 3, 2 * m2.im));
+            s.g = x2 / 15 * t.re;
         }
+        /* a1, b1 scaled by 2^-e2 to [1/2, 1) and the amplitudes scaled
+         * back (amp_scale_ = x^3 2^(e + e2)); p is their ratio.  Each
+         * component by ldexp, not by a factor 2^-e: that factor overflows
+         * for a subnormal coefficient. */
+        cm = fabs(a1.re);
+        if (fabs(a1.im) > cm) cm = fabs(a1.im);
+        if (fabs(b1.re) > cm) cm = fabs(b1.re);
+        if (fabs(b1.im) > cm) cm = fabs(b1.im);
+        if (cm > 0) (void)frexp(cm, &e2);
+        a1 = mist_mie_cplx(ldexp(a1.re, -e2), ldexp(a1.im, -e2));
+        b1 = mist_mie_cplx(ldexp(b1.re, -e2), ldexp(b1.im, -e2));
+        mist_mie__store(coef, 1, a1, b1);
+        s.n_terms = 1;
+        s.amp_scale_ = ldexp(x2 * x, e + e2);
         s2 = 3 * (mist_mie__abs2(a1) + mist_mie__abs2(b1));
         s.p_norm_ = s2 > 0 ? 1 / (4 * MIST_MIE__PI * s2) : 0;
         return s;
@@ -554,8 +643,12 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     dx = work + 8 * ((size_t)nt + 1);          /* D_n(x) for n > x          */
     ix = 1 / x;
     z = mist_mie__scale(m, x);
+    /* the fractions at nt + 1: psi_nt / psi_{nt+1} = 1 / (z s_nt(z)), and
+     * D_nt(z) = (nt + 1)/z - z s_nt(z) (see the sphere) */
     if (!pec) {
-        mist_mie_complex d = mist_mie__lentz(nt, z), zi = mist_mie__inv(z);
+        mist_mie_complex d, zi = mist_mie__inv(z);
+        fz = mist_mie__ratio(nt + 1, z);
+        d = mist_mie__sub(mist_mie__scale(zi, nt + 1.0), mist_mie__inv(fz));
         dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
         for (n = nt; n > 1; --n) {
             mist_mie_complex nz = mist_mie__scale(zi, (double)n);
@@ -563,15 +656,48 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
         }
     }
-    n1 = (int)floor(x) + 1;                     /* first n with n > x */
+    /* first n with n > x, in [1, nt + 1] whatever x (an integer bound on
+     * the indices of dx[] below, in every build) */
+    n1 = (int)mist_mie__clampl(floor(x), 0, nt) + 1;
     if (n1 <= nt) {
-        double d = mist_mie__lentz(nt, mist_mie_cplx(x, 0)).re;
+        double d;
+        fx = mist_mie__ratio(nt + 1, mist_mie_cplx(x, 0)).re;     /* > 0: nt > x */
+        d = (nt + 1) * ix - 1 / fx;
         dx[nt] = d;
         for (n = nt; n > n1; --n) {
             double den = d + n * ix;
             if (den == 0) den = 1e-150;
             d = n * ix - 1 / den;
             dx[n - 1] = d;
+        }
+    }
+
+    /* n > max(x, |m| x): U_n = (m D_n(mx) - D_n(x)) / x, see above */
+    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
+    if (!pec && n2 <= nt) {
+        mist_mie_complex zw = mist_mie__mul(z, z), smp, tp, u;
+        double w = x * x, sxp = 1 / (x * fx);                     /* s_nt(x) */
+        m2 = mist_mie__mul(m, m);
+        mu1 = mist_mie__mul(mist_mie_cplx(m.re - 1, m.im), mist_mie_cplx(m.re + 1, m.im));
+        smp = mist_mie__inv(mist_mie__mul(z, fz));                  /* s_nt(mx) */
+        /* the top term by the differences (it is past the tail; T's
+         * starting error shrinks by x^2 s s' a step below) */
+        tp = mist_mie_cplx(smp.re - sxp, smp.im);
+        u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+        dm[2 * nt] = u.re; dm[2 * nt + 1] = u.im;
+        for (n = nt - 1; n >= n2; --n) {
+            double an = 2.0 * n + 3, sx = 1 / (an - w * sxp);
+            mist_mie_complex zs = mist_mie__mul(zw, smp);
+            mist_mie_complex sm = mist_mie__inv(mist_mie_cplx(an - zs.re, -zs.im));
+            mist_mie_complex pr = mist_mie__scale(sm, sx);
+            /* U_n = s s' (-(2n+3)(mu-1) - mu x^2 T_{n+1}) */
+            u = mist_mie__mul(pr, mist_mie__sub(mist_mie__scale(mu1, -an),
+                                                mist_mie__scale(mist_mie__mul(m2, tp), w)));
+            /* T_n = x^2 s s' ((mu-1) s_{n+1}(mx) + T_{n+1}) */
+            tp = mist_mie__add(mist_mie__mul(mu1, smp), tp);
+            tp = mist_mie__scale(mist_mie__mul(pr, tp), w);
+            dm[2 * n] = u.re; dm[2 * n + 1] = u.im;
+            sxp = sx; smp = sm;
         }
     }
 
@@ -587,6 +713,23 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         xin = mist_mie_cplx(psi, -chi);
         xim = mist_mie_cplx(psi1, -chi1);
         if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
+        if (!pec && n >= n2) {
+            /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
+             * (x U_n - (mu - 1) D_n(x)) / mu.  The denominators T xi_n -
+             * xi_{n-1} = num - i (T chi_n - chi_{n-1}), as T psi_n -
+             * psi_{n-1} = num. */
+            mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
+            double dn = dx[n];
+            qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
+            num = mist_mie__scale(qa, psi);
+            t = mist_mie_cplx(qa.re + dn + nx, qa.im);
+            a = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
+                                                 num.im - (t.re * chi - chi1)));
+            num = mist_mie__scale(dl, psi);
+            t = mist_mie_cplx(dl.re + dn + nx, dl.im);
+            b = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
+                                                 num.im - (t.re * chi - chi1)));
+        } else {
         {   /* a_n */
             mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
             mist_mie_complex ta = mist_mie_cplx(qa.re + nx, qa.im), num, den;
@@ -608,6 +751,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                 num = mist_mie__scale(mist_mie_cplx(qb.re - dx[n], qb.im), psi);
             den = mist_mie__sub(mist_mie__mul(tb, xin), xim);
             b = (den.re == 0 && den.im == 0) ? mist_mie_cplx(0, 0) : mist_mie__div(num, den);
+        }
         }
         mist_mie__store(coef + 6 * (size_t)(n - 1), n, a, b);
 
@@ -681,6 +825,11 @@ MIST_MIE_FUNC void mist_mie_sphere_free(mist_mie_sphere *s)
 /*   tau_n = n mu pi_n - (n+1) pi_{n-1}   (upward in n: stable).             */
 /* With pi_n(-mu) = (-1)^(n-1) pi_n(mu), tau_n(-mu) = (-1)^n tau_n(mu), one */
 /* pass gives mu and -mu: the tables use it when their angles pair up.      */
+/* At mu = +-1, pi_n = mu^(n-1) n(n+1)/2 and tau_n = mu pi_n are integers:  */
+/* there the recurrence divides by n instead of multiplying by the rounded */
+/* (2n+1)/n, (n+1)/n, every step exact (n^3 < 2^53 for n < 2e5), so S1(1)  */
+/* = S2(1) and S2(-1) = -S1(-1) hold bit for bit (the rounded factors      */
+/* drifted: S1(-1) 5.7e-6 off at x = 8000, m = 1.0001).                     */
 /* ======================================================================== */
 
 /* out[0..3]: S1(mu), S2(mu) (re, im) of the stored series; with pair, also
@@ -693,12 +842,14 @@ MIST_MIE_FUNC void mist_mie__sums(const mist_mie_sphere *s, double mu, int pair,
     double pim = 0, pin = 1, fn = 1, sg = 1;
     double s1r = 0, s1i = 0, s2r = 0, s2i = 0;
     double t1r = 0, t1i = 0, t2r = 0, t2i = 0;
+    int edge = mu == 1 || mu == -1;             /* exact pi_n, tau_n */
     if (!pair) {
         for (n = 1; n <= nt; ++n, c += 6) {
             double tau = fn * mu * pin - (fn + 1) * pim, pnx;
             s1r += c[0] * pin + c[2] * tau;  s1i += c[1] * pin + c[3] * tau;
             s2r += c[0] * tau + c[2] * pin;  s2i += c[1] * tau + c[3] * pin;
-            pnx = c[4] * mu * pin - c[5] * pim;
+            pnx = edge ? ((2 * fn + 1) * mu * pin - (fn + 1) * pim) / fn
+                       : c[4] * mu * pin - c[5] * pim;
             pim = pin; pin = pnx; fn += 1;
         }
     } else {
@@ -710,7 +861,8 @@ MIST_MIE_FUNC void mist_mie__sums(const mist_mie_sphere *s, double mu, int pair,
             s2r += atr + bpr;  s2i += ati + bpi;
             t1r += sg * (apr - btr);  t1i += sg * (api - bti);
             t2r += sg * (bpr - atr);  t2i += sg * (bpi - ati);
-            pnx = c[4] * mu * pin - c[5] * pim;
+            pnx = edge ? ((2 * fn + 1) * mu * pin - (fn + 1) * pim) / fn
+                       : c[4] * mu * pin - c[5] * pim;
             pim = pin; pin = pnx; fn += 1; sg = -sg;
         }
     }
@@ -798,7 +950,8 @@ MIST_MIE_FUNC void mist_mie__block(const mist_mie_sphere *s, const double *mu, i
 
 /* out[j] (=, or += if add) scale * (|S1|^2 + |S2|^2) of the stored series
  * at mu[j], j < n.  Angles with mu[n-1-j] = -mu[j] share one evaluation;
- * out-of-range cosines are clamped, NaN gives 0. */
+ * out-of-range cosines are clamped, NaN gives 0.  mu = +-1 (after the
+ * clamp) go through mist_mie__sums' exact pi_n, the others in blocks. */
 MIST_MIE_FUNC void mist_mie__table(const mist_mie_sphere *s, const double *mu, size_t n,
                                    double scale, int add, double *out)
 {
@@ -813,6 +966,17 @@ MIST_MIE_FUNC void mist_mie__table(const mist_mie_sphere *s, const double *mu, s
             if (paired && j > k) continue;         /* done with its mirror */
             if (!mist_mie__mu(&u)) {               /* NaN */
                 if (!add) out[j] = 0;
+                continue;
+            }
+            if (u == 1 || u == -1) {
+                double o[8], v;
+                mist_mie__sums(s, u, paired, o);
+                v = scale * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2] + o[3] * o[3]);
+                if (add) out[j] += v; else out[j] = v;
+                if (paired) {
+                    v = scale * (o[4] * o[4] + o[5] * o[5] + o[6] * o[6] + o[7] * o[7]);
+                    if (add) out[k] += v; else out[k] = v;
+                }
                 continue;
             }
             bu[nb] = u; bj[nb] = j; bk[nb] = paired ? k : n;
@@ -888,7 +1052,7 @@ MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
         1.56e-7, 1.48e-7, 1.25e-7 };
     int st = MIST_MIE_OK, i;
     double t, f;
-    if (lambda_nm != lambda_nm) {
+    if (mist_mie__isnan(lambda_nm)) {
         if (status) *status = MIST_MIE_EDOMAIN;
         return mist_mie_cplx(0, 0);
     }
@@ -896,8 +1060,7 @@ MIST_MIE_FUNC mist_mie_complex mist_mie_water(double lambda_nm, int *status)
     if (lambda_nm > 800) { lambda_nm = 800; st = MIST_MIE_CLAMPED; }
     if (status) *status = st;
     t = (lambda_nm - 350) / 25;                /* in [0, 18] */
-    i = (int)t;
-    if (i > 17) i = 17;
+    i = (int)mist_mie__clampl(t, 0, 17);       /* the table's index, in every build */
     f = t - i;
     return mist_mie_cplx(n_hq[i] + f * (n_hq[i + 1] - n_hq[i]),
                          k_hq[i] + f * (k_hq[i + 1] - k_hq[i]));
@@ -1130,6 +1293,13 @@ MIST_MIE_FUNC double mist_mie__dist_logdensity(const mist_mie_dist *d, double t)
 /* 1 s, C_ext within 3e-4 and g within 2e-4 of the automatic result.        */
 /* ======================================================================== */
 
+/* The size parameter of radius r at vacuum wavelength lambda, x = 2 pi
+ * n_medium r / lambda: one expression for the sizing and the spheres. */
+MIST_MIE_FUNC double mist_mie__avg_x(double n_medium, double lambda, double r)
+{
+    return 2 * MIST_MIE__PI * n_medium / lambda * r;
+}
+
 MIST_MIE_FUNC mist_mie_avg mist_mie__avg_zero(int status)
 {
     mist_mie_avg a;
@@ -1279,7 +1449,7 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
             /* size-parameter spacing <= 0.05 at the top of the range */
             span = 2 * MIST_MIE__PI * n_medium / lmin * (logv ? rmax * (t1 - t0) : rmax - r0);
             span = span / 0.05;
-            nodes = span < 64 ? 64 : (span > 65536 ? 65536 : (size_t)span + 1);
+            nodes = (size_t)mist_mie__clampl(span, 63, 65535) + 1;
         }
         nodes = (nodes + 7) / 8 * 8;
         h = (t1 - t0) / (double)(nodes / 8);
@@ -1311,7 +1481,15 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
     }
     a.n_radii = (int)nodes;
 
-    xmax = 2 * MIST_MIE__PI * n_medium * rmax / lmin;
+    /* The workspace: sized for the largest x, and grown below where a
+     * sphere needs more (mist_mie_workspace_size of that sphere's own x,
+     * the size mist_mie_sphere_make checks), so the two sizes agree by
+     * construction.  The size is not monotone in x (N steps down at x =
+     * 4200: a node just below needs more than r_max), and an x computed
+     * through another rounding than the sizing's came out an ulp above
+     * it, across a step of the size: ENOMEM, every number 0, for valid
+     * input.  One expression for x: mist_mie__avg_x. */
+    xmax = mist_mie__avg_x(n_medium, lmin, rmax);
     nwork = mist_mie_workspace_size(xmax);
     if (nwork == 0) return mist_mie__avg_zero(MIST_MIE_EDOMAIN);
     work = (double *)malloc(nwork * sizeof(double));
@@ -1328,10 +1506,17 @@ MIST_MIE_FUNC mist_mie_avg mist_mie_average(const mist_mie_dist *dist,
         area += w * wsum_l * rho2;
         vol += w * wsum_l * rho2 * rho;
         for (l = 0; l < n_wl; ++l) {
-            double x = 2 * MIST_MIE__PI * n_medium / wl[l].lambda * r, as;
+            double x = mist_mie__avg_x(n_medium, wl[l].lambda, r), as;
             double ww = w * (wl[l].weight / wmax_l);
+            size_t need = mist_mie_workspace_size(x);
             mist_mie_sphere s;
             if (!(ww > 0)) continue;
+            if (need > nwork) {
+                free(work);
+                nwork = need;
+                work = (double *)malloc(nwork * sizeof(double));
+                if (!work) { ok = 0; a.status = MIST_MIE_ENOMEM; nwork = 0; break; }
+            }
             s = mist_mie_sphere_make(x, mist_mie_cplx(wl[l].m.re / n_medium,
                                                       wl[l].m.im / n_medium), work, nwork);
             if (s.status != MIST_MIE_OK) { ok = 0; a.status = s.status; break; }

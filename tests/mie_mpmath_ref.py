@@ -8,7 +8,9 @@ recomputing with 25 digits more), summed to N = x + 4 x^(1/3) + 40 terms
 (past every term above 1e-40 of the largest here).  BH83 convention: m = mr +
 i mi, mi >= 0.  Prints a C table: x, mr, mi, Q_ext, Q_sca, g, Q_back,
 p(1), p(0), p(-1) (per steradian, normalised over the sphere).
-Run: python3 tests/mie_mpmath_ref.py   (mpmath; a few minutes)."""
+Run: python3 tests/mie_mpmath_ref.py   (mpmath; a few minutes).
+     python3 tests/mie_mpmath_ref.py near1: test_near_one's table (m close
+     to 1: Q_sca, g, Q_back, S1 and S2 at mu = 0.5 and -1; about a minute)."""
 import math
 import mpmath as mp
 
@@ -83,8 +85,69 @@ CASES = [  # x, mr, mi (the double nearest each literal)
     (5.212822, 1.55, 0.0), (339.04523060942176, 2.8136189359334152, 1e-4),
     (1000.0, 1.33, 0.01), (10000.0, 1.33, 1e-5),
 ]
-if __name__ == '__main__':
+if __name__ == '__main__' and len(__import__('sys').argv) == 1:
     for x, mr, mi in CASES:
         v = reference(x, mr, mi)
         print('    {%s, %s, %s,\n     %s},' % (repr(x), repr(mr), repr(mi),
               ', '.join(mp.nstr(t, 17, min_fixed=1, max_fixed=0) for t in v)), flush=True)
+
+def amplitudes(x, a, b, mu):
+    """S1, S2 at mu from the series a, b (BH83 convention)."""
+    pim, pin = mp.mpf(0), mp.mpf(1)
+    s1 = s2 = mp.mpc(0)
+    mu = mp.mpf(mu)
+    for i in range(len(a)):
+        n = i + 1
+        tau = n * mu * pin - (n + 1) * pim
+        c = mp.mpf(2 * n + 1) / (n * (n + 1))
+        s1 += c * (a[i] * pin + b[i] * tau)
+        s2 += c * (a[i] * tau + b[i] * pin)
+        pim, pin = pin, ((2 * n + 1) * mu * pin - (n + 1) * pim) / n
+    return s1, s2
+
+def reference_near1(x, mr, mi, mus):
+    """As reference(), m close to 1: Q_sca, g, Q_back and S1, S2 at mus."""
+    n_max = int(x + 4 * x ** (1.0 / 3) + 40)
+    lo = min(x, math.hypot(mr, mi) * x)
+    loss = sum(2 * math.log10((k + 1.0) / lo) for k in range(1, n_max + 1) if k + 1 > lo)
+    dm = abs(complex(mr, mi) - 1)
+    res = []
+    for extra in (0, 25):
+        mp.mp.dps = int(40 + loss + max(0, -math.log10(dm)) + extra)
+        xx, m = mp.mpf(x), mp.mpc(mr, mi)
+        a, b = series(xx, m, n_max)
+        q = quantities(xx, a, b)
+        v = [q[1], q[2], q[3]]
+        for mu in mus:
+            s1, s2 = amplitudes(xx, a, b, mu)
+            v += [s1.real, s1.imag, s2.real, s2.imag]
+        res.append(v)
+    err = max(float(abs(u - v) / abs(v)) for u, v in zip(*res) if v != 0)
+    assert err < 1e-25, err
+    return res[1]
+
+# m close to 1 (test_mie.c, test_near_one): x, mr, mi; amplitudes at mu =
+# 0.5 and -1.  Small x, where m D_n(mx) - D_n(x) cancelled; x from 30 to
+# 20000 (the amplitude error there); the dipole limit (x < 1e-8), also
+# with m - 1 far below double's range for the efficiencies.
+NEAR1 = [
+    (0.003, 1.0001, 0.0), (0.01, 1.0001, 0.0), (0.005, 1.001, 0.0),
+    (1e-7, 1.0001, 0.0), (2e-8, 1.000001, 1e-6), (0.05, 1.00001, 0.0),
+    (0.3, 1.0001, 1e-4), (1.5, 1.0001, 0.0), (30.0, 1.0001, 0.0),
+    (8000.0, 1.0001, 0.0),
+    (100.0, 1.0001, 0.0), (300.0, 1.0001, 0.0), (1000.0, 1.0001, 0.0),
+    (3000.0, 1.0001, 0.0), (20000.0, 1.0001, 0.0), (1000.0, 1.001, 0.0),
+    (8000.0, 1.001, 0.0), (8000.0, 1.00001, 0.0), (2000.0, 1.0000001, 0.0),
+    (1.5, 1.0000001, 0.0), (30.0, 1.000001, 0.0),
+    (1e-9, 1.0001, 0.0), (5e-9, 1.5, 0.1), (3e-10, 1.0, 1e-200),
+    (1e-9, 1.0, 1e-300), (2e-9, 1.0000000000000002, 0.0),
+]
+
+def main_near1():
+    for x, mr, mi in NEAR1:
+        v = reference_near1(x, mr, mi, (0.5, -1))
+        print('    {%s, %s, %s,\n     %s},' % (repr(x), repr(mr), repr(mi),
+              ',\n     '.join(mp.nstr(t, 20, min_fixed=1, max_fixed=0) for t in v)), flush=True)
+
+if __name__ == '__main__' and len(__import__('sys').argv) > 1:
+    main_near1()

@@ -5,10 +5,14 @@
  *   - Du (2004), Table 1 (Q_ext, Q_sca) and Table 2 (S1 at 0 and 180 deg);
  *   - Bohren & Huffman's Appendix A example (efficiencies and the S11, POL,
  *     S33, S34 table) and two further cases computed by miepython;
+ *   - m close to 1 (small x, x to 20000, the dipole limit) against an
+ *     mpmath series, with negative controls; S1(1) = S2(1), S2(-1) =
+ *     -S1(-1) exactly; the dipole limit with a subnormal m - 1;
  *   - the small-particle limits; normalisation and mean cosine of the phase
  *     function by quadrature; no NaN or overflow up to x = 1e4 (and 1e5);
  *   - size-distribution averages against an independent trapezoid rule and
- *     closed-form moments; wavelength averages; water's index table;
+ *     closed-form moments; wavelength averages; water's index table; the
+ *     averages' workspace at the steps of the term count;
  *   - bad input gets the documented result;
  *   - the benchmark's workload (1800 angles x 3 wavelengths, one droplet of
  *     10 and 50 um) gives a valid average; its speed is the benchmark's.
@@ -149,6 +153,388 @@ static void test_series_tail(void)
         mist_mie_sphere_free(&s);
     }
     if (verbose) printf("series tail: worst %.2f of the tolerance\n", worst);
+}
+
+/* ======================================================================== */
+/* m close to 1: against the mpmath series                                  */
+/* tests/mie_mpmath_ref.py near1 printed these to 20 digits (Q_sca, g,      */
+/* Q_back, then S1, S2 at mu = 0.5 and at mu = -1, re and im; the series    */
+/* at 40 digits plus those its recurrences and m - 1 cost, checked with 25  */
+/* more).  Values below double's range are written 0.                       */
+/* Where n > max(x, |m| x) the coefficients come from recurrences with      */
+/* (m^2 - 1) factored out (mist_mie.h, the sphere): at x |m| < 1 that is    */
+/* every term, and Q, g and S are within a few eps whatever m - 1 (the      */
+/* dipole limit, x |m| < 1e-8, adds g's leading term 0.16 x^2, exact to    */
+/* O(x^2 |m|^2) relative).  Tolerance 1e-13 relative there (measured at     */
+/* most 1e-15; the cancelling numerator had given g 3.1e-7 off at m =       */
+/* 1.0001, x = 0.003, 0.6 at x = 1e-7).  At x |m| >= 1 the terms n <=      */
+/* |m| x still lose 1/|m - 1| of their digits: Q_sca, g and S within       */
+/* 1e-15 / |m - 1| relative (measured at most 4e-16 / |m - 1|: g at x =    */
+/* 1.5, m = 1 + 1e-7).  The amplitudes also carry the rounding of their N  */
+/* ~ x terms, each up to (2n+1)/2 |a_n - b_n| <= 2n: a random walk of       */
+/* eps sqrt(sum 4 n^2) = 1.2 eps x^(3/2) absolutely, tolerance 2 eps        */
+/* x^(3/2) (measured at most 0.49 of it: S(-1) at x = 8000, m = 1.001).    */
+/* Q_back = 4 |S1(-1)|^2 / x^2 is tiny for m near 1 (the sum cancels), so   */
+/* that absolute error is 2 |dS| / |S1(-1)| = 4 eps sqrt(x / Q_back) of it  */
+/* relative, far above 1e-15 / |m - 1|: 1.4e-9 at x = 8000, m = 1.0001     */
+/* (Q_back = 9.8e-11), where 4 eps sqrt(x / Q_back) is 8e-9.  Every check  */
+/* is also made with the reference moved by 10 tolerances: it must fail    */
+/* (negative control).                                                      */
+/* ======================================================================== */
+static const double near1_ref[][14] = {
+        {0.003, 1.0001, 0.0,
+         9.5996454104447722391e-19, 1.4400535433318919492e-6, 1.4399416276220842743e-18,
+         2.1599202173486741113e-24, -1.7999683769348617333e-12, 1.0799601086748621128e-24, -8.9998418856463281335e-13,
+         2.1599202173444749142e-24, -1.7999635168940757595e-12, -2.1599202173444749142e-24, 1.7999635168940757595e-12},
+        {0.01, 1.0001, 0.0,
+         1.1850982820254753027e-16, 1.600067807306519725e-5, 1.7775763155703542023e-16,
+         2.9627457048266486332e-21, -6.6664889127541853704e-11, 1.4813728525022408886e-21, -3.3332444603771740464e-11,
+         2.9627457041155293929e-21, -6.6662889143254852563e-11, -2.9627457041155293929e-21, 6.6662889143254852563e-11},
+        {0.005, 1.001, 0.0,
+         7.4048613372694794371e-16, 4.0014732392446327768e-6, 1.1107180903472037661e-15,
+         4.6280383357702675971e-21, -8.3319218810817056467e-11, 2.3140191678938438143e-21, -4.1659609530433501081e-11,
+         4.6280383357007958657e-21, -8.3318593751155112899e-11, -4.6280383357007958657e-21, 8.3318593751155112899e-11},
+        {1e-07, 1.0001, 0.0,
+         1.1851456740743787025e-36, 1.6000586702400135605e-15, 1.7777185111115609427e-36,
+         2.9628641851859464881e-51, -6.6665555407413569534e-26, 1.4814320925929732441e-51, -3.3332777703706784771e-26,
+         2.9628641851859464881e-51, -6.6665555407413369532e-26, -2.9628641851859464881e-51, 6.6665555407413369532e-26},
+        {2e-08, 1.000001, 1e-06,
+         3.7925913280832683307e-43, 6.4000023466666668876e-17, 5.6888869921249015859e-43,
+         5.3333315555531852115e-30, -5.3333333328969485647e-30, 2.6666657777765926058e-30, -2.6666666664484742823e-30,
+         5.3333315555531845715e-30, -5.3333333328969479247e-30, -5.3333315555531845715e-30, 5.3333333328969479247e-30},
+        {0.05, 1.00001, 0.0,
+         7.3999799729629241287e-16, 4.0005857735684225037e-4, 1.1088871229680138136e-15,
+         4.6249872517847012433e-19, -8.3312364169576629475e-10, 2.312493712638874523e-19, -4.1656182209789647551e-10,
+         4.6249865578333396618e-19, -8.3249892003233776582e-10, -4.6249865578333396618e-19, 8.3249892003233776582e-10},
+        {0.3, 1.0001, 0.0001,
+         1.852303378378912106e-10, 1.447319698057287501e-2, 2.6788528507701948888e-10,
+         1.7838097604195735679e-6, -1.783847825662522207e-6, 8.9190682521282415019e-7, -8.9192391268459759652e-7,
+         1.7359842986565703298e-6, -1.7360234529092035521e-6, -1.7359842986565703298e-6, 1.7360234529092035521e-6},
+        {1.5, 1.0001, 0.0,
+         2.706468105851942875e-8, 3.7675667714048325464e-1, 1.0754167828301654668e-8,
+         1.4495274354319994654e-8, -1.7828297165419369128e-4, 7.5163672752023221569e-9, -8.9144611541402060326e-5,
+         1.2364402709098220889e-8, -7.7776726920983415719e-5, -1.2364402709098220889e-8, 7.7776726920983415719e-5},
+        {30.0, 1.0001, 0.0,
+         1.7919658989538479985e-5, 9.9568202856066532038e-1, 8.933159040140322882e-9,
+         2.7394208607733912165e-6, 1.1394426619713363587e-3, 3.8288903559268793944e-6, 5.6969276278822943634e-4,
+         8.1146658418645370293e-6, -1.4177076342567417822e-3, -8.1146658418645370293e-6, 1.4177076342567417822e-3},
+        {8000.0, 1.0001, 0.0,
+         1.1093011853434401464, 9.9999982866945482006e-1, 9.8254428419940331495e-11,
+         7.6797509060793468315e-1, -7.4694375599006293736e-1, 3.8367352992267946168e-1, -3.7359897059480653445e-1,
+         3.9631561462971435634e-2, -1.1875145160218903313e-3, -3.9631561462971435634e-2, 1.1875145160218903313e-3},
+        {100.0, 1.0001, 0.0,
+         1.9990983765420460484e-4, 9.9949290779035391368e-1, 2.5850513501962383996e-9,
+         -1.8275996780908927702e-4, 1.7455888351239677189e-2, -9.2741188449747503449e-5, 8.7312776503021931713e-3,
+         -4.749052846085024655e-5, 2.5417263867688640675e-3, 4.749052846085024655e-5, -2.5417263867688640675e-3},
+        {300.0, 1.0001, 0.0,
+         1.7996947657145225001e-3, 9.9993140351546776747e-1, 1.0008593865026603314e-8,
+         -1.8949372000907414537e-5, 6.9551944804436623128e-4, -2.0350641714376056248e-6, 3.5316664549554356033e-4,
+         9.1751397358594111953e-4, -1.4978368738663536838e-2, -9.1751397358594111953e-4, 1.4978368738663536838e-2},
+        {1000.0, 1.0001, 0.0,
+         1.9957458796536436964e-2, 9.9999260075081950708e-1, 2.9633619397550323259e-9,
+         -9.5946736461510020645e-3, 9.4628705244344154397e-2, -4.8415931603885403512e-3, 4.7286374327406604955e-2,
+         5.5082952190664395797e-3, -2.665519027728685875e-2, -5.5082952190664395797e-3, 2.665519027728685875e-2},
+        {3000.0, 1.0001, 0.0,
+         1.764497678913326721e-1, 9.9999903694565422598e-1, 9.7747580965652143645e-9,
+         1.7649374969266602281e-1, -5.7129124043006053749e-1, 8.8204350160159566774e-2, -2.856503636778895868e-1,
+         -8.4224965854210271706e-2, 1.2206293804480066715e-1, 8.4224965854210271706e-2, -1.2206293804480066715e-1},
+        {20000.0, 1.0001, 0.0,
+         3.1705307692283740648, 9.9999993398723014422e-1, 2.4501233315149373457e-9,
+         3.1595187249113410133, 1.4402396065244932326, 1.5810326091817132957, 7.192783595784229798e-1,
+         3.7446931160672328682e-1, -3.2370521746842529205e-1, -3.7446931160672328682e-1, 3.2370521746842529205e-1},
+        {1000.0, 1.001, 0.0,
+         1.5991453924631687521, 9.9999062005771220216e-1, 4.5938619309913874352e-7,
+         6.6950897989068841938e-1, -4.3625731380628309517e-1, 3.368950514668571272e-1, -2.2343298122982687472e-1,
+         3.1171578922438533228e-1, 1.3296546552771987735e-1, -3.1171578922438533228e-1, -1.3296546552771987735e-1},
+        {8000.0, 1.001, 0.0,
+         2.1046306205485330679, 9.9999045521618423796e-1, 9.746341091232445414e-7,
+         1.5970889257439334593e+1, 2.2395980145692739463, 8.0343749867690270524, 1.1503001532526418142,
+         8.7723441149698589149e-1, -3.8502734361675469827, -8.7723441149698589149e-1, 3.8502734361675469827},
+        {8000.0, 1.00001, 0.0,
+         1.2781933339726766506e-2, 9.9999985204332847148e-1, 9.9802526195087262636e-11,
+         1.7886655259516858465e-4, -2.2918424614694152999e-3, 8.6023278626546880273e-5, -1.143662194252931025e-3,
+         6.3792969600711965965e-3, -3.9448003617630925584e-2, -6.3792969600711965965e-3, 3.9448003617630925584e-2},
+        {2000.0, 1.0000001, 0.0,
+         7.9999841136561251962e-8, 9.9999798385692582776e-1, 5.3216948955995832914e-15,
+         2.8896784394524618134e-8, -1.4724433276353950561e-4, 1.4264111752334908654e-8, -7.3622206939780664216e-5,
+         2.9306913518465524402e-8, -7.2949941992467706914e-5, -2.9306913518465524402e-8, 7.2949941992467706914e-5},
+        {1.5, 1.0000001, 0.0,
+         2.7063227265520670894e-14, 3.7674210739554195711e-1, 1.075436386231573922e-14,
+         1.4494557742533334567e-14, -1.7827784206080107744e-7, 7.515867916755841155e-15, -8.9138924155789826615e-8,
+         1.2363983575117263677e-14, -7.7777436783121430166e-8, -1.2363983575117263677e-14, 7.7777436783121430166e-8},
+        {30.0, 1.000001, 0.0,
+         1.7917801090793037513e-9, 9.9568273337804196535e-1, 8.9739844211937169825e-13,
+         2.7840651487549512075e-10, 1.1232781915040831562e-5, 3.84934798332546623e-10, 5.6163871393131013591e-6,
+         8.136068536482247355e-10, -1.4209667442093869067e-5, -8.136068536482247355e-10, 1.4209667442093869067e-5},
+        {1e-09, 1.0001, 0.0,
+         1.1851456740743839511e-44, 1.600058670240012991e-19, 1.777718511111575926e-44,
+         2.9628641851859602469e-63, -6.6665555407413657662e-32, 1.4814320925929801234e-63, -3.3332777703706828831e-32,
+         2.9628641851859602469e-63, -6.6665555407413657642e-32, -2.9628641851859602469e-63, 6.6665555407413657642e-32},
+        {5e-09, 1.5, 0.1,
+         1.5013984517405006258e-34, 4.9493772612755964151e-18, 2.2520976776107509121e-34,
+         6.2266155991941383737e-27, -3.6997166198056191463e-26, 3.1133077995970691999e-27, -1.8498583099028095763e-26,
+         6.226615599194138306e-27, -3.6997166198056191138e-26, -6.226615599194138306e-27, 3.6997166198056191138e-26},
+        {3e-10, 1.0, 1e-200,
+         0.0, 1.4399999999999999809e-20, 0.0,
+         1.7999999999999999319e-229, 0.0, 8.9999999999999996593e-230, 0.0,
+         1.7999999999999999318e-229, 0.0, -1.7999999999999999318e-229, 0.0},
+        {1e-09, 1.0, 1e-300,
+         0.0, 1.6000000000000001994e-19, 0.0,
+         0.0, 0.0, 0.0, 0.0,
+         0.0, 0.0, 0.0, 0.0},
+        {2e-09, 1.0000000000000002, 0.0,
+         9.3494625803971785753e-67, 6.4000000000000013197e-19, 1.402419387059576784e-66,
+         9.3494625803971797399e-85, -1.1842378929335004868e-42, 4.6747312901985898699e-85, -5.9211894646675024338e-43,
+         9.3494625803971797399e-85, -1.1842378929335004853e-42, -9.3494625803971797399e-85, 1.1842378929335004853e-42},
+};
+
+/* |got - ref| <= tol (complex: the modulus), measured in units of sc > 0
+ * (so no square underflows, also where -ffast-math makes hypot naive) */
+static int near1_check(const double *got, const double *ref, int cplx, double tol, double sc)
+{
+    double d = cplx ? hypot((got[0] - ref[0]) / sc, (got[1] - ref[1]) / sc)
+                    : fabs(got[0] - ref[0]) / sc;
+    return d <= tol / sc && got[0] == got[0];
+}
+
+static void test_near_one(void)
+{
+    static const char *name[7] = { "Qsca", "g", "Qback", "S1(.5)", "S2(.5)", "S1(-1)", "S2(-1)" };
+    const double sum_abs = 2 * DBL_EPSILON;     /* |dS| <= 2 eps x^(3/2), see above */
+    size_t i;
+    int k, controls = 0;
+    double worst = 0;
+    for (i = 0; i < sizeof near1_ref / sizeof near1_ref[0]; ++i) {
+        const double *r = near1_ref[i];
+        double x = r[0], dm = hypot(r[1] - 1, r[2]), am = hypot(r[1], r[2]);
+        int inner = x * (am > 1 ? am : 1) < 1;
+        mist_mie_sphere s = mist_mie_sphere_new(x, mist_mie_cplx(r[1], r[2]));
+        mist_mie_complex a, b, c, d;
+        double got[11], tol[7], e;
+        mt_check(s.status == MIST_MIE_OK, "near 1: x=%g m=%.17g+%gi status %d", x, r[1], r[2],
+                 s.status);
+        mist_mie_amplitudes(&s, 0.5, &a, &b);
+        mist_mie_amplitudes(&s, -1, &c, &d);
+        got[0] = s.q_sca; got[1] = s.g; got[2] = s.q_back;
+        got[3] = a.re; got[4] = a.im; got[5] = b.re; got[6] = b.im;
+        got[7] = c.re; got[8] = c.im; got[9] = d.re; got[10] = d.im;
+        for (k = 0; k < 7; ++k) {
+            const double *rk = r + 3 + (k < 3 ? k : 3 + 2 * (k - 3));
+            int cx = k >= 3;
+            double ar = cx ? hypot(rk[0], rk[1]) : fabs(rk[0]);
+            if (inner) tol[k] = 1e-13 * ar;
+            else if (k < 2) tol[k] = (1e-13 + 1e-15 / dm) * ar;
+            else if (k == 2)
+                tol[k] = (1e-13 + 1e-15 / dm + 4 * sum_abs * sqrt(x) / sqrt(rk[0])) * ar;
+            else tol[k] = (1e-13 + 1e-15 / dm) * ar + sum_abs * x * sqrt(x);
+            tol[k] += 2e-323;                      /* (values past double's range) */
+            {
+                const double *gk = got + (k < 3 ? k : 3 + 2 * (k - 3));
+                double moved[2];
+                e = cx ? hypot(gk[0] - rk[0], gk[1] - rk[1]) : fabs(gk[0] - rk[0]);
+                if (e / tol[k] > worst) worst = e / tol[k];
+                mt_check(near1_check(gk, rk, cx, tol[k], ar > 0 ? ar : 1),
+                         "near 1: x=%g m=%.17g+%gi %s: %.17g vs %.17g (%.2e, tol %.2e)", x,
+                         r[1], r[2], name[k], gk[0], rk[0], e, tol[k]);
+                if (ar > 0) {                          /* negative control */
+                    double f = 1 + 10 * tol[k] / ar;   /* 10 tolerances out */
+                    moved[0] = rk[0] * f;
+                    moved[1] = cx ? rk[1] * f : 0;
+                    mt_check(!near1_check(gk, moved, cx, tol[k], ar),
+                             "near 1 control: x=%g %s accepted a moved reference", x, name[k]);
+                    ++controls;
+                }
+            }
+        }
+        mist_mie_sphere_free(&s);
+    }
+    if (verbose) printf("near 1: worst %.2f of the tolerance, %d controls\n", worst, controls);
+}
+
+/* ======================================================================== */
+/* mu = +-1: S1(1) = S2(1) and S2(-1) = -S1(-1), bit for bit               */
+/* There pi_n = tau_n = n(n+1)/2 (mu = 1) and pi_n = -tau_n = (-1)^(n-1)    */
+/* n(n+1)/2 (mu = -1) are integers, and mist_mie__sums computes them        */
+/* exactly; the recurrence's rounded factors had made S1 and S2 at mu = -1  */
+/* differ by 5.7e-6 relative (x = 8000, m = 1.0001), 1.1e-5 in S1 + S2.     */
+/* Also: the phase table at -1 alone equals mist_mie_phase, paired within  */
+/* the amplitudes' rounding;                                                */
+/* and S1(-1) at x = 20000, m = 1.0001 is within test_near_one's bound of   */
+/* the mpmath value (tests/mie_mpmath_ref.py near1: 0.37446931160672328682 */
+/* - 0.32370521746842529205 i).                                             */
+/* ======================================================================== */
+static void test_edge_symmetry(void)
+{
+    static const double cases[][3] = {
+        {8000, 1.0001, 0}, {20000, 1.0001, 0}, {1000, 1.33, 1e-5}, {339.04523060942176,
+        2.8136189359334152, 1e-4}, {0.3, 1.5, 0.1}, {5000, 1.5, 0}, {30, 1000, 0},
+        {100, 1.33, 2}, {1e-9, 1.33, 0}, {0.1, 0.75, 0}, {12345.678, 1.0001, 1e-3},
+    };
+    size_t i, j;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        mist_mie_sphere s = mist_mie_sphere_new(cases[i][0], mist_mie_cplx(cases[i][1], cases[i][2]));
+        mist_mie_complex a, b, c, d;
+        double mu[7] = {1, 0.5, 0.2, 0, -0.2, -0.5, -1}, p[7], q1, q2;
+        double one[1] = {-1}, p1[1];
+        mist_mie_amplitudes(&s, 1, &a, &b);
+        mist_mie_amplitudes(&s, -1, &c, &d);
+        mt_check(s.status == MIST_MIE_OK && a.re == b.re && a.im == b.im,
+                 "S1(1) = S2(1): x=%g m=%g+%gi: %.17g %.17g vs %.17g %.17g", cases[i][0],
+                 cases[i][1], cases[i][2], a.re, a.im, b.re, b.im);
+        mt_check(c.re == -d.re && c.im == -d.im,
+                 "S2(-1) = -S1(-1): x=%g m=%g+%gi: %.17g %.17g vs %.17g %.17g (%.2e)",
+                 cases[i][0], cases[i][1], cases[i][2], c.re, c.im, d.re, d.im,
+                 hypot(c.re + d.re, c.im + d.im) / hypot(c.re, c.im));
+        mist_mie_phase_table(&s, mu, 7, p);
+        mist_mie_phase_table(&s, one, 1, p1);
+        q1 = mist_mie_phase(&s, 1);
+        q2 = mist_mie_phase(&s, -1);
+        mt_check(p1[0] == q2, "phase table at -1 alone: x=%g: %.17g vs %.17g", cases[i][0],
+                 p1[0], q2);
+        /* the table (paired: other loops, other roundings; bit for bit but
+         * where the compiler contracts differently) against
+         * mist_mie_phase.  Two roundings of each S: where its partial sums
+         * stay ~n (backward), 2 eps x^(3/2) absolutely (test_near_one), so
+         * p = (|S1|^2 + |S2|^2) / (2 pi x^2 Q_sca) within 2 |S| 4 eps x^(3/2)
+         * / (2 pi x^2 Q_sca) = 8 eps sqrt(x p / (pi Q_sca)); where they
+         * grow to S (forward), eps sqrt(N) of S, 4 eps sqrt(N) of p. */
+        for (j = 0; j < 7; ++j) {
+            double q = j == 0 ? q1 : j == 6 ? q2 : mist_mie_phase(&s, mu[j]);
+            double tol = 8 * DBL_EPSILON * sqrt(cases[i][0] * q / (PI * s.q_sca))
+                       + 4 * DBL_EPSILON * sqrt((double)s.n_terms) * q;
+            mt_check(fabs(p[j] - q) <= tol, "phase table: x=%g mu=%g: %.17g vs %.17g (tol %.2e)",
+                     cases[i][0], mu[j], p[j], q, tol);
+        }
+        if (i == 1) {               /* x = 20000, m = 1.0001: the mpmath S1(-1) */
+            double tol = (1e-13 + 1e-15 / 1e-4) * 0.4945 + 2 * DBL_EPSILON * 20000 * sqrt(20000.0);
+            double e = hypot(c.re - 3.7446931160672328682e-1, c.im + 3.2370521746842529205e-1);
+            mt_check(e <= tol, "S1(-1) at x = 20000: %.3e off (tol %.2e)", e, tol);
+        }
+        mist_mie_sphere_free(&s);
+    }
+}
+
+/* ======================================================================== */
+/* The dipole limit with a subnormal or tiny m - 1                          */
+/* x < 1e-8, m = 1 + dr + i mi with mi down to the smallest subnormal and  */
+/* dr down to one ulp of 1: the coefficients are scaled by powers of 2 (the */
+/* factor 2^-e from frexp of a subnormal overflowed: S and p were NaN with  */
+/* status OK).  p is the dipole's 3 (1 + mu^2) / (16 pi) to 1e-15; the      */
+/* amplitude S1(0) = -i x^3 K (|K| from m - 1, its scale 2^e exact) to     */
+/* 1e-12 where it is a normal double, finite and tiny where not; g =        */
+/* 0.16 x^2 (m -> 1) to 1e-12.                                              */
+/* ======================================================================== */
+/* 1 where subnormal results are flushed to 0 (-ffast-math's start-up
+ * code; subnormal input then reads as 0: m = 1 exactly, see FAST MATH in
+ * mist.h) */
+static int flushes(void)
+{
+    volatile double v = DBL_MIN;
+    v = v / 4;
+    return !(v > 0);
+}
+
+static void test_dipole_tiny(void)
+{
+    static const double xs[3] = {1e-9, 3e-12, 1e-150};
+    static const double mis[7] = {0, 1e-308, 2.2e-311, 4.9e-324, 1e-300, 1e-200, 1e-20};
+    static const double drs[4] = {0, 2.220446049250313e-16, -1.1102230246251565e-16, 1e-12};
+    size_t i, j, k, l;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 7; ++j)
+            for (k = 0; k < 4; ++k) {
+                double x = xs[i], mi = mis[j], mr = 1 + drs[k];
+                double mu[5] = {1, 0.5, 0, -0.5, -1}, p[5];
+                double buf[128];
+                mist_mie_sphere s;
+                mist_mie_complex a, b;
+                int bad = 0;
+                if (mi == 0 && drs[k] == 0) continue;           /* m = 1 */
+                if (mi > 0 && mi < DBL_MIN && flushes()) continue;  /* read as 0 */
+                s = mist_mie_sphere_make(x, mist_mie_cplx(mr, mi), buf, 128);
+                mist_mie_phase_table(&s, mu, 5, p);
+                for (l = 0; l < 5; ++l) {
+                    double q = mist_mie_phase(&s, mu[l]), want = 3 * (1 + mu[l] * mu[l]) / (16 * PI);
+                    mist_mie_amplitudes(&s, mu[l], &a, &b);
+                    if (!(near_rel(q, want, 1e-15) && near_rel(p[l], want, 1e-15))) bad = 1;
+                    if (!(a.re - a.re == 0 && a.im - a.im == 0 && b.re - b.re == 0
+                          && b.im - b.im == 0)) bad = 1;
+                }
+                mt_check(s.status == MIST_MIE_OK && !bad,
+                         "dipole x=%g m=1%+g+%gi: p %.17g (want %.17g)", x, drs[k], mi,
+                         mist_mie_phase(&s, 0), 3 / (16 * PI));
+                mt_check(near_rel(s.g, 0.16 * x * x, 1e-12) || (x * x < 1e-300 && s.g >= 0),
+                         "dipole x=%g m=1%+g+%gi: g %.17g vs %.17g", x, drs[k], mi, s.g,
+                         0.16 * x * x);
+                if (drs[k] == 0 && x == 1e-9 && mi >= 1e-300) {   /* S1(0) = -i x^3 K, K ~ 2/3 i mi */
+                    mist_mie_amplitudes(&s, 0, &a, &b);
+                    mt_check(near_rel(a.re, 2.0 / 3 * mi * 1e-27, 1e-12) || mi * 1e-27 < 1e-290,
+                             "dipole S1(0) x=%g mi=%g: %.17g vs %.17g", x, mi, a.re,
+                             2.0 / 3 * mi * 1e-27);
+                }
+            }
+}
+
+/* ======================================================================== */
+/* mist_mie_average's workspace at the steps of the term count              */
+/* The workspace was sized at xmax = 2 pi n_medium r_max / lambda_min, the  */
+/* spheres made at 2 pi n_medium / lambda r: an ulp apart, and where that   */
+/* ulp crossed a step of mist_mie_workspace_size the average answered       */
+/* ENOMEM with every number 0 (r = 0.8937 um at 0.55 um, n_medium 1.0003,   */
+/* m 1.33; and the size is not monotone: N steps down at x = 4200).  Here:  */
+/* the reported case; radii at 40 steps of the workspace size (the step     */
+/* found by bisection in x, then r = x / k and 8 ulps either side), one     */
+/* and two wavelengths; a table law over x = 4199.99 .. 4200.              */
+/* ======================================================================== */
+static void test_average_steps(void)
+{
+    const double lam = 0.55, nm = 1.0003, k = 2 * PI * nm / lam;
+    mist_mie_wavelength wl[2];
+    mist_mie_dist d;
+    mist_mie_avg a;
+    int step, fails = 0, tries = 0, u;
+    double x0 = 0.5;
+    wl[0] = mist_mie_wl(lam, 1, mist_mie_cplx(1.33, 0));
+    wl[1] = mist_mie_wl(0.45, 1, mist_mie_cplx(1.34, 1e-9));
+    d = mist_mie_dist_mono(0.8937);
+    a = mist_mie_average(&d, wl, 1, nm, NULL, 0, NULL);
+    mt_check(a.status == MIST_MIE_OK && a.c_sca > 0, "average r = 0.8937: status %d, C_sca %g",
+             a.status, a.c_sca);
+    for (step = 0; step < 40; ++step) {
+        /* the next x where the workspace size changes, to the ulp */
+        double lo = x0, hi = x0, r;
+        size_t w0 = mist_mie_workspace_size(lo);
+        while (mist_mie_workspace_size(hi) == w0) hi += 0.25;
+        while (nextafter(lo, hi) < hi) {
+            double mid = lo + (hi - lo) / 2;
+            if (mid <= lo || mid >= hi) break;
+            if (mist_mie_workspace_size(mid) == w0) lo = mid; else hi = mid;
+        }
+        r = hi / k;
+        for (u = -8; u <= 8; ++u) {
+            double rr = r;
+            int t;
+            for (t = 0; t < (u < 0 ? -u : u); ++t) rr = nextafter(rr, u < 0 ? 0 : 1e9);
+            d = mist_mie_dist_mono(rr);
+            a = mist_mie_average(&d, wl, (size_t)(1 + (u & 1)), nm, NULL, 0, NULL);
+            ++tries;
+            if (a.status != MIST_MIE_OK) {
+                if (fails++ < 5)
+                    printf("FAIL: average at a step: r = %.17g (x = %.17g): status %d\n", rr,
+                           rr * k, a.status);
+            }
+        }
+        x0 = hi * 1.25;
+    }
+    mt_check(fails == 0, "average at the steps: %d of %d failed", fails, tries);
+    {   /* N(x) steps down at x = 4200: a node just below needs more */
+        double r[2], w[2] = {1, 1};
+        r[0] = 4199.99 / k; r[1] = 4200 / k;
+        d = mist_mie_dist_table(r, w, 2);
+        a = mist_mie_average(&d, wl, 1, nm, NULL, 0, NULL);
+        mt_check(a.status == MIST_MIE_OK && a.c_sca > 0,
+                 "average over x = 4199.99, 4200: status %d", a.status);
+    }
 }
 
 /* ======================================================================== */
@@ -1603,6 +1989,10 @@ int main(void)
     verbose = v && *v && *v != '0';
     test_wiscombe();
     test_series_tail();
+    test_near_one();
+    test_edge_symmetry();
+    test_dipole_tiny();
+    test_average_steps();
     test_du();
     test_bohren_huffman();
     test_small();
