@@ -79,8 +79,7 @@
  *   S1(1) = S2(1) and S2(-1) = -S1(-1) bit for bit.  Near mu = +-1 at
  *   large x, p moves by ~x^2/2 times mu's rounding (an independent check:
  *   1.4e-10 at x = 1000, mu = -1 + 2^-53).  Cut at N
- *   itself, as MIEV0 and Du (2004) do (and mist_mie did before the sixth
- *   session of 2026-11-27), the tail stays in the results: Q_back 2e-7 off
+ *   itself, as MIEV0 and Du (2004) do, the tail stays in the results: Q_back 2e-7 off
  *   at x = 339 and 4200, 6.3e-6 at x = 1e4, m = 1.33 + 1e-5 i (which is
  *   why their printed amplitudes are compared with mist_mie's coefficients
  *   summed to N in tests/test_mie.c); at x < 0.0148, where N = 1, b_1
@@ -386,9 +385,9 @@ MIST_MIE_FUNC int mist_mie_terms(double x)
  * the largest, at most mist_mie__cap(x) = N + 4 x^(1/3) + 8.  N alone
  * leaves its tail in the results: past the edge n ~ x, |a_n| falls as
  * exp(-1.9 c^(3/2)) at n = x + c x^(1/3) (Debye), ~2e-7 at N's c = 4.05:
- * an independent check (30- to 250-digit mpmath series) measured Q_back
- * 1.7e-7 off at x = 339 and 2.3e-7 at x = 4200; and below x = 0.0148,
- * where N = 1, b_1 and a_2 were dropped: Q_back and the phase function
+ * a 30- to 250-digit mpmath series puts Q_back cut at N 1.7e-7 off at
+ * x = 339 and 2.3e-7 at x = 4200; and below x = 0.0148, where N = 1, N
+ * drops b_1 and a_2: Q_back and the phase function
  * 0.2 x^2 off (4.5e-5), g 30-46% (its leading terms are a_1 b_1 and a_1
  * a_2).  c = 8 puts the tail at 1e-18; small x stops after a few terms
  * (a_n ~ x^(2n+1)). */
@@ -1098,10 +1097,9 @@ MIST_MIE_FUNC mist_mie_dist mist_mie_dist_mono(double r)
 
 /* Gamma [HT74]: effective radius r_eff > 0, effective variance v_eff in
  * (0, 1/2).  Below v_eff = 1e-32 the law (relative width ~16 sqrt(v_eff))
- * is narrower than double resolves r: it is the monodisperse law at r_eff
- * (its integration range had rounded to nothing: EDOMAIN from 1e-34 on,
- * found by an independent check; at 1e-33 the gamma average equals the
- * monodisperse one to 2 ulps, measured). */
+ * is narrower than double resolves r (its integration range would round to
+ * nothing): it is the monodisperse law at r_eff (at 1e-33 the gamma
+ * average equals the monodisperse one to 2 ulps, measured). */
 MIST_MIE_FUNC mist_mie_dist mist_mie_dist_gamma(double r_eff, double v_eff)
 {
     if (v_eff > 0 && v_eff < 1e-32) return mist_mie__dist(MIST_MIE_DIST_MONO, r_eff, 0, 0);
