@@ -3844,7 +3844,10 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
             MIST__V3 l = MIST__FN(mist__unit)(fog->sun_dir);
             MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
             pR = MIST__FN(mist_rayleigh_eval)(u);
-            pM = MIST__FN(mist__fog_eval)(&fog->mie_phase, u);
+            /* a Dirac lobe on its peak: +inf counts as the largest finite
+             * value, clamped here, before phi1(tau), 1 - T or phi1(z)
+             * multiply it (else the factor is lost: 5% at tau = 0.1) */
+            pM = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
             ly = l.y;
             if (ly > MIST__C(0)) {              /* nu = 1 - w / ly, exact near 0 */
                 nu = (ly - w) / ly;             /* (its sign) */
@@ -4012,6 +4015,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
     MIST__T tau[3], tr[3], ls[3], bd[3], E[3], La[3], tb[65];
     MIST__T w = 0, y = origin.y, s = length, pR = 0, ly = 0, anu = 0;
     int ok[MIST_HFOG_MAX_LAYERS], k, i, c, j, np = 0, cs = 0, same = 1, sunx = 0, any = 0;
+    int lx[3] = { 0, 0, 0 };
     MIST__V3 v;
     for (c = 0; c < 3; ++c) { tau[c] = MIST__C(0); tr[c] = MIST__C(1); ls[c] = bd[c] = MIST__C(0); }
     if (!layers || n < 1 || !(s > MIST__C(0)) || !MIST__FN(mist__finite)(y)) goto out;
@@ -4045,10 +4049,30 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
         MIST__V3 l = MIST__FN(mist__unit)(layers[0].sun_dir);
         MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
         pR = MIST__FN(mist_rayleigh_eval)(u);
-        for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist__fog_eval)(&layers[k].mie_phase, u);
+        for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&layers[k].mie_phase, u));
         E[0]  = layers[0].sun.r;     E[1]  = layers[0].sun.g;     E[2]  = layers[0].sun.b;
         La[0] = layers[0].ambient.r; La[1] = layers[0].ambient.g; La[2] = layers[0].ambient.b;
         for (c = 0; c < 3; ++c) { E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]); }
+        /* The lights' scale 2^lx[c]: albedo x light (ca, cu below) is at
+         * most La + E p, p the largest phase value (a Dirac lobe's is the
+         * largest finite value), which may leave the range though the
+         * in-scatter, times 1 - T, does not.  Where La + E p may pass
+         * 2^(MAX_EXP - 5) (room for the bound's sums, < 16 c), everything
+         * linear in the lights is carried times 2^-lx[c] (exactly, in the
+         * scaled products) and scaled back once at the end. */
+        {
+            MIST__T pmax = pR;
+            int eE, eL, ep, m;
+            for (k = 0; k < n; ++k) if (pM[k] > pmax) pmax = pM[k];
+            (void)MIST__FN(mist__frexp)(pmax, &ep);
+            for (c = 0; c < 3; ++c) {
+                (void)MIST__FN(mist__frexp)(E[c], &eE);
+                (void)MIST__FN(mist__frexp)(La[c], &eL);
+                m = E[c] > MIST__C(0) && eE + ep > eL ? eE + ep : eL;   /* La + E p < 2^(m+1) */
+                m = m + 1 - ((MIST__EB >> 1) + 1 - 5);
+                lx[c] = m > 0 ? m : 0;
+            }
+        }
         sunx = layers[0].sun_extinction != 0;
         ly = l.y;
         if (ly > MIST__C(0)) {   /* anu = |nu| ly, nu = 1 - w/ly (|nu| overflows for tiny ly) */
@@ -4150,9 +4174,11 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     if (first) ref = k;
                     first = 0;
                     /* albedo x light: ambient (and undimmed sun), dimmed sun */
-                    cu[k] = MIST__FN(mist__expmul)(E[c], sR[k][c], pR, MIST__C(1), st[k][c], MIST__C(0), MIST__C(0))
-                          + MIST__FN(mist__expmul)(E[c], sM[k][c], pM[k], MIST__C(1), st[k][c], MIST__C(0), MIST__C(0));
-                    ca[k] = MIST__FN(mist__expmul)(La[c], sR[k][c] + sM[k][c], MIST__C(1), MIST__C(1), st[k][c], MIST__C(0), MIST__C(0)) + (sunx ? MIST__C(0) : cu[k]);
+                    /* (times 2^-lx[c]: the lights' scale above) */
+                    cu[k] = MIST__FN(mist__expmul_k)(E[c], sR[k][c], pR, MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c])
+                          + MIST__FN(mist__expmul_k)(E[c], sM[k][c], pM[k], MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c]);
+                    ca[k] = MIST__FN(mist__expmul_k)(La[c], sR[k][c] + sM[k][c], MIST__C(1), MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c])
+                          + (sunx ? MIST__C(0) : cu[k]);
                 }
                 if (unb) dtau = (MIST__T)INFINITY;
                 if (!(dtau > MIST__C(0)) && !have) continue;   /* (dtau may underflow) */
@@ -4323,6 +4349,10 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                   + MIST__C(4) * (MIST__T)(np + 8) * MIST__EPS * ls[c] + MIST__C(8) * MIST__EPS * rnd[c]
                   + (MIST__T)(np * (2 * n + 8)) * tsub;
             if (!(bd[c] >= MIST__C(0))) bd[c] = (MIST__T)INFINITY;   /* beyond range: none */
+            if (lx[c]) {                        /* the lights' scale, back */
+                ls[c] = MIST__FN(mist__ldexp)(ls[c], lx[c]);
+                bd[c] = MIST__FN(mist__ldexp)(bd[c], lx[c]);
+            }
         }
     }
 out:

@@ -710,6 +710,79 @@ static void test_sun_cases(void)
              "undimmed sun = phase-weighted ambient: %.17g", l3.r);
 }
 
+/* A Dirac Mie lobe (|g| = 1) seen on its peak: its +inf density counts as
+ * the largest finite value P (documented), and the in-scatter is then
+ * E sM P I, I the reference's integral (undimmed: int rho e^-tau; dimmed:
+ * int rho e^-(tau + sun depth)), for mist_hfog_eval and a single layer of
+ * mist_hfog_layers_eval alike.  The sun lies along the view (u = 1, l_y = w:
+ * nu = 0), optical depths 1e-3, 0.1 and 3.  E = 10 and albedo 0.5: E P
+ * and the albedo times it leave the range where E P (1 - T) sM / st does
+ * not (tau <= 0.1; at tau 3 the result itself is beyond it: +inf).  The
+ * bar is the grid's, BAR eps (1 + tau + sun depth): the same closed
+ * forms, with P an exact factor.  (Clamped
+ * after phi1(tau) or 1 - T multiplied it, P lost that factor: 5% high at
+ * tau 0.1, 1/phi1(3) = 3.2x at tau 3; the layered form lost E where E P
+ * overflowed: 10x low.) */
+static void test_dirac(void)
+{
+    static const double sg[] = { 1e-5, 1e-3, 3e-2 };
+    const double H = 1000, w = 0.6, len = 100;
+    int is_float, m, lay, sx;
+    double worst = 0;
+    for (is_float = 0; is_float < 2; ++is_float) {
+        double eps = is_float ? 0x1p-24 : 0x1p-53, P = is_float ? FLT_MAX : DBL_MAX;
+        ref_t r;
+        memset(&r, 0, sizeof r);
+        r.y = 0; r.yb = 0; r.H = H; r.d0 = 1;
+        r.w = is_float ? (LD)(float)w : (LD)w;
+        r.ly = r.w;
+        r.nsig = 3;
+        for (m = 0; m < 3; ++m) r.sig[m] = is_float ? (LD)(float)sg[m] : (LD)sg[m];
+        ref_run(&r, len);
+        for (lay = 0; lay < 2; ++lay)
+            for (sx = 0; sx < 2; ++sx)
+                for (m = 0; m < 3; ++m) {
+                    double got, sM;
+                    LD tau = r.sig[m] * r.C, ref, e;
+                    if (!is_float) {
+                        mist_hfog f;
+                        mist_vec3 o = { 0, 0, 0 }, d = { 0.8, 0.6, 0 };
+                        mist_rgb t, l, b;
+                        memset(&f, 0, sizeof f);
+                        f.density = 1; f.scale_height = H;
+                        f.mie_ext.r = sg[m]; f.mie_scat.r = 0.5 * sg[m];
+                        f.mie_phase = mist_fog_make(1, 0, 0, 0);
+                        f.sun_dir = d; f.sun.r = 10; f.sun_extinction = sx;
+                        if (lay) mist_hfog_layers_eval(&f, 1, o, d, len, 8, &t, &l, &b);
+                        else mist_hfog_eval(&f, o, d, len, &t, &l);
+                        got = l.r; sM = f.mie_scat.r;
+                    } else {
+                        mist_hfogf f;
+                        mist_vec3f o = { 0, 0, 0 }, d = { 0.8f, 0.6f, 0 };
+                        mist_rgbf t, l, b;
+                        memset(&f, 0, sizeof f);
+                        f.density = 1; f.scale_height = (float)H;
+                        f.mie_ext.r = (float)sg[m]; f.mie_scat.r = 0.5f * f.mie_ext.r;
+                        f.mie_phase = mist_fog_makef(1, 0, 0, 0);
+                        f.sun_dir = d; f.sun.r = 10; f.sun_extinction = sx;
+                        if (lay) mist_hfog_layers_evalf(&f, 1, o, d, (float)len, 8, &t, &l, &b);
+                        else mist_hfog_evalf(&f, o, d, (float)len, &t, &l);
+                        got = l.r; sM = f.mie_scat.r;
+                    }
+                    ref = 10 * (LD)sM * (LD)P * (sx ? r.Is[m] : r.I[m]);
+                    /* sun depth at the lower end (the camera): st rho0 H / l_y */
+                    e = fabsl((LD)got - ref) / ((LD)eps * (1 + tau + (sx ? r.sig[m] * H / r.ly : 0)) * ref);
+                    if (got != got) e = INFINITY;
+                    if (ref > (LD)P) e = got == INFINITY ? 0 : INFINITY;   /* beyond the range */
+                    if ((double)e > worst) worst = (double)e;
+                    mt_check(e <= BAR, "Dirac lobe on its peak, %s %s%s tau=%.3Lg: %.17g ref %.17Lg (%.2Lf)",
+                             is_float ? "float" : "double", lay ? "layers" : "eval",
+                             sx ? " dimmed" : "", tau, got, ref, e);
+                }
+    }
+    printf("Dirac lobe on its peak: worst %.2f eps (1 + tau + sun depth)\n", worst);
+}
+
 /* ------------------------------------------------------------------------ */
 /* Several layers                                                           */
 /* ------------------------------------------------------------------------ */
@@ -1653,7 +1726,7 @@ int main(int argc, char **argv)
     test_ref_exp();
     ref_tol = 4e-18L;
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
-    if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); }
+    if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
     if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny(); }
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }
