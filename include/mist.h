@@ -4606,8 +4606,10 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 {
     MIST__T p, q, w0, w1, tr = MIST__C(1), r = MIST__C(0);
     k0 = MIST__FN(mist__pos)(k0); k1 = MIST__FN(mist__pos)(k1);
-    if (!(s0 == s0)) s0 = MIST__C(0);
-    if (!(s1 == s1)) s1 = MIST__C(0);
+    /* the sources clamped here, before any branch multiplies them (NaN: 0;
+     * +-inf: +-the largest finite value) */
+    s0 = s0 < MIST__C(0) ? -MIST__FN(mist__pos)(-s0) : MIST__FN(mist__pos)(s0);
+    s1 = s1 < MIST__C(0) ? -MIST__FN(mist__pos)(-s1) : MIST__FN(mist__pos)(s1);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
         tr = length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG
@@ -4628,53 +4630,70 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
         } else {
             /* k len beyond the range (or len = +inf): e^-tau(1) = 0, and
              * the large-argument forms of mist__seg_w are taken with the
-             * length scaled out: len M0 and len M1 directly, through
-             * sqrt(len) (M0 ~ 1/p, M1 ~ 1/p^2 or G/(2b)). */
-            MIST__T m0, m1, rl = MIST__M(sqrt)(length), sd, g, f;
+             * length scaled out: len M0 = n0 / d0 and len M1 = n1 / d1 2^e1
+             * (M0 ~ 1/p, M1 ~ 1/p^2 or G/(2b)), each term s len M one
+             * scaled product (mist__expmul_s): len M1 ~ len / p^2 is below
+             * the range where s len M1 is not (1e300 k0, len 1: 1e-600, for
+             * a source near the largest value, 1.8e-292). */
+            MIST__T n0, d0 = MIST__C(1), n1, d1, rt = MIST__C(0), a0, a1, x, sd, g, f;
+            MIST__T rl = MIST__M(sqrt)(length);
+            int e0, e1 = 0, e;
             tr = k0 > MIST__C(0) || k1 > MIST__C(0) ? MIST__C(0) : MIST__C(1);
             if (!(length <= MIST__BIG)) {       /* the limit: k0 and s0 throughout */
                 if (transmittance) *transmittance = tr;
                 if (k0 > MIST__C(0)) return s0 / k0;
                 return s0 == MIST__C(0) ? MIST__C(0) : s0 * (MIST__T)INFINITY;
             }
-            /* with x = k0 sqrt(len) / (2 sd): len M0 = sqrt(pi) x erfcx(x)
-             * / k0 = (1 - G(x)) / k0 (rising), 2 x F(x) / k0 = (1 + K(x)) /
-             * k0 (falling) where x >= 1: no sqrt(len) / sd, which overflows
-             * (k, len near the largest value: found by the fuzzer) */
-            if (k1 > k0) {                      /* rising: erfcx */
-                MIST__T x;
-                sd = MIST__M(sqrt)(MIST__C(0.5) * (k1 - k0));
+            /* with x = k0 sqrt(len) / (2 sd), 2 x^2 = k0^2 len / |k1 - k0|:
+             * where x >= 1, len M0 = sqrt(pi) x erfcx(x) / k0 = (1 - G(x)) / k0
+             * (rising), 2 x F(x) / k0 = (1 + K(x)) / k0 (falling), and
+             * len M1 = G / |k1 - k0| = h / (k0^2 len), h = 2 x^2 G (K): near 1
+             * and flat in x, so the roundings of x cancel (constant: h = 1);
+             * no sqrt(len) / sd, which overflows (k, len near the largest
+             * value: found by the fuzzer).  Below (rising only: falling has
+             * x > 19 here), len M0 = sqrt(pi)/2 (sqrt(len) / sd) erfcx(x),
+             * len M1 = G / (k1 - k0).  W0 = M0 - M1 = M0 (1 - rt), rt =
+             * M1 / M0 in [0, 1/2]: h / (p (1 -+ G)) (0 where p = k0 len
+             * overflows), or G / (sqrt(pi) sd sqrt(len) erfcx(x)). */
+            x = MIST__C(1);
+            n0 = n1 = MIST__C(1);               /* constant (k0 > 0: p, q finite) */
+            d1 = MIST__C(1);
+            if (k1 != k0) {
+                MIST__T dk = k1 > k0 ? k1 - k0 : k0 - k1;
+                sd = MIST__M(sqrt)(MIST__C(0.5) * dk);
                 x = MIST__C(0.5) * (k0 / sd) * rl;
-                f = MIST__FN(mist__erfcx)(x, &g);
-                m0 = x >= MIST__C(1) ? (MIST__C(1) - g) / k0
-                                     : MIST__C(0.5) * MIST__C(MIST__SQRTPI) * (rl / sd) * f;
-                m1 = g / (k1 - k0);
-            } else if (k1 < k0) {               /* falling: Dawson */
-                MIST__T x;
-                sd = MIST__M(sqrt)(MIST__C(0.5) * (k0 - k1));
-                x = MIST__C(0.5) * (k0 / sd) * rl;
-                f = MIST__FN(mist__dawson)(x, &g);
-                m0 = x >= MIST__C(1) ? (MIST__C(1) + g) / k0 : (rl / sd) * f;
-                m1 = g / (k0 - k1);
-            } else if (k0 > MIST__C(0)) {       /* constant: len M1 = 1/(k0 p) */
-                m0 = MIST__C(1) / k0;
-                m1 = p <= MIST__BIG ? m0 / p : m0 / k0 / length;
-            } else {                            /* unreachable: p, q finite */
-                m0 = length; m1 = MIST__C(0.5) * length;
+                f = k1 > k0 ? MIST__FN(mist__erfcx)(x, &g) : MIST__FN(mist__dawson)(x, &g);
+                if (x >= MIST__C(1)) {
+                    n0 = k1 > k0 ? MIST__C(1) - g : MIST__C(1) + g;
+                    /* h = 2 x^2 G: 1 to rounding where x^2 would overflow */
+                    n1 = x < MIST__C(MIST__DBL ? 1e150 : 1e18) ? MIST__C(2) * x * x * g : MIST__C(1);
+                } else {
+                    n0 = MIST__C(0.5) * MIST__C(MIST__SQRTPI) * f * rl;
+                    n1 = g;
+                    d0 = sd; d1 = dk;
+                    rt = g / (MIST__C(MIST__SQRTPI) * sd * rl * f);
+                }
             }
-            w0 = m0 - m1; w1 = m1;
-            r = (s0 != MIST__C(0) ? s0 * w0 : MIST__C(0)) + (s1 != MIST__C(0) ? s1 * w1 : MIST__C(0));
-            if (!MIST__FN(mist__finite)(r)) {
-                /* a term beyond the range (+inf - inf was NaN): the sources'
-                 * exponents apart (w0, w1 < len / 745 are finite), summed
-                 * at the larger, the result rounded once into the range */
-                int e0, e1, e;
-                MIST__T f0 = MIST__FN(mist__frexp)(s0, &e0) * w0;
-                MIST__T f1 = MIST__FN(mist__frexp)(s1, &e1) * w1;
-                e = e0 > e1 ? e0 : e1;
-                r = MIST__FN(mist__ldexp)(MIST__FN(mist__ldexp)(f0, e0 - e)
-                                          + MIST__FN(mist__ldexp)(f1, e1 - e), e);
+            if (x >= MIST__C(1)) {              /* d1 2^-e1 = k0^2 len, exactly scaled */
+                int ek, el;
+                MIST__T mk = MIST__FN(mist__frexp)(k0, &ek), ml = MIST__FN(mist__frexp)(length, &el);
+                MIST__T pp = k0 * length;
+                d0 = k0;
+                d1 = mk * mk * ml;
+                e1 = -(2 * ek + el);
+                rt = pp <= MIST__BIG ? n1 / (pp * n0) : MIST__C(0);
             }
+            /* s0 n0 (1 - rt) / d0 + s1 n1 / d1 2^e1: each a scaled product,
+             * summed at the larger exponent and rounded once into the range
+             * (a term beyond it, or +inf - inf, loses nothing) */
+            a0 = MIST__FN(mist__expmul_s)(s0 < MIST__C(0) ? -s0 : s0, n0, MIST__C(1) - rt, MIST__C(1), d0,
+                                          MIST__C(0), MIST__C(0), 0, &e0);
+            a1 = MIST__FN(mist__expmul_s)(s1 < MIST__C(0) ? -s1 : s1, n1, MIST__C(1), MIST__C(1), d1,
+                                          MIST__C(0), MIST__C(0), e1, &e1);
+            if (s0 < MIST__C(0)) a0 = -a0;
+            if (s1 < MIST__C(0)) a1 = -a1;
+            e = a0 == MIST__C(0) ? e1 : (a1 == MIST__C(0) || e0 > e1 ? e0 : e1);
+            r = MIST__FN(mist__ldexp)(MIST__FN(mist__ldexp)(a0, e0 - e) + MIST__FN(mist__ldexp)(a1, e1 - e), e);
         }
     }
     if (transmittance) *transmittance = tr;

@@ -1216,6 +1216,59 @@ static void test_segment_long(void)
     printf("long segments: worst %.2f eps (double), %.2f eps (float)\n", worst, worstf);
 }
 
+/* Sources at the range's end on a long step (transmittance underflowed):
+ * +-inf counts as +-the largest finite value S (documented), and the step
+ * is len (s0 W0 + s1 W1) with the weights' series at p = k0 len (as
+ * long_step: p >= 1e20, |q| <= 2p, the neglected terms below 1e-20
+ * relative), in long double, where S len W1 is representable though len W1
+ * (~ len / p^2: 1e-600 at p = 1e300, len 1) is not.  Bar: SEG_BAR eps of
+ * the result (two scaled products and one sum of like-signed terms, or of
+ * a term beyond the other's last bit) plus the smallest normal; a result
+ * beyond the range must be +-inf.  (The infinite source was multiplied
+ * before it was clamped on this branch: NaN or +inf; and S len W1 was 0 for
+ * len W1 below the range: 1e-300 against 1.8e-292.) */
+static void test_segment_inf_source(void)
+{
+    static const double k0s[2][3] = { { 1e300, 1e100, 1e20 }, { 1e30, 1e25, 1e20 } };
+    static const double rs[] = { 1e-300, 1, 2 };            /* k1 / k0 */
+    static const double sv[][2] = { { 1, INFINITY }, { 1, -INFINITY }, { INFINITY, 1 },
+                                    { -INFINITY, 0 }, { INFINITY, -INFINITY }, { DBL_MAX, 1 },
+                                    { 1, DBL_MAX }, { 2, -3 } };
+    size_t a, b, c;
+    int flt;
+    double worst = 0;
+    for (flt = 0; flt < 2; ++flt)
+        for (a = 0; a < 3; ++a)
+            for (b = 0; b < 3; ++b)
+                for (c = 0; c < sizeof sv / sizeof *sv; ++c) {
+                    double len = 1, k0 = k0s[flt][a], k1, got, e;
+                    double big = flt ? FLT_MAX : DBL_MAX, eps = flt ? 0x1p-24 : 0x1p-53;
+                    double tmin = flt ? FLT_MIN : DBL_MIN, s0 = sv[c][0], s1 = sv[c][1];
+                    LD P, ref, S0, S1;
+                    k1 = rs[b] * k0;         /* (float: 1e-300 k0 is 0) */
+                    if (s0 == DBL_MAX) s0 = big;
+                    if (s1 == DBL_MAX) s1 = big;
+                    S0 = s0 > big ? big : (s0 < -big ? -big : s0);
+                    S1 = s1 > big ? big : (s1 < -big ? -big : s1);
+                    if (flt) {
+                        P = (LD)(float)k0 * (float)len;
+                        got = mist_segment_linearf((float)k0, (float)k1, (float)s0, (float)s1,
+                                                   (float)len, (float *)0);
+                    } else {
+                        P = (LD)k0 * len;
+                        got = mist_segment_linear(k0, k1, s0, s1, len, (double *)0);
+                    }
+                    ref = len * (S0 * (1 / P - 1 / (P * P)) + S1 / (P * P));
+                    if (fabsl(ref) > (LD)big) e = got == (ref > 0 ? INFINITY : -INFINITY) ? 0 : INFINITY;
+                    else e = (double)(fabsl((LD)got - ref) / ((LD)eps * fabsl(ref) + (LD)tmin));
+                    if (got != got) e = INFINITY;
+                    if (e > worst) worst = e;
+                    mt_check(e <= SEG_BAR, "segment %s k0=%g k1=%g s=(%g, %g) len=%g: %.17g ref %.17Lg (%.2f eps)",
+                             flt ? "float" : "double", k0, k1, s0, s1, len, got, ref, e);
+                }
+    printf("segment, sources at the range's end: worst %.2f eps\n", worst);
+}
+
 /* The dimmed sun at a subnormal sun height and the column of a fog whose
  * subnormal scale height meets a huge base: 1/|nu| = ly / |ly - w| was
  * itself subnormal and lost its digits (8.7% off at ly = 2^-1074), and
@@ -1728,7 +1781,8 @@ int main(int argc, char **argv)
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
     if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny(); }
-    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long(); }
+    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long();
+                                          test_segment_inf_source(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }
     if (want(argc, argv, "bad")) test_bad();
     if (want(argc, argv, "expm1")) { test_expm1(); test_frexp_ldexp(); }
