@@ -189,7 +189,12 @@
  *          calls in tests/test_domain.c failed (mist_fog_eval at w_d > 1
  *          against mist_draine_eval: gcc's constant-propagated copy of a
  *          function; it comes and goes with the shape of the calling code,
- *          cause not pinned down).  The cost: gcc does
+ *          cause not pinned down).  gcc 12 also compiled an out-of-line
+ *          copy of a guarded helper (the height fog's mist__hlayer, once
+ *          it passed the inlining limit) with its NaN test as under
+ *          -ffinite-math-only, though the copy carried the guard's
+ *          attribute (cause not pinned down): that helper is always
+ *          inlined (tests/fastmath/).  The cost: gcc does
  *          not inline a function with other floating-point flags into a
  *          fast-math caller, so every mist call stays a call: 1x to 3.5x
  *          the time per call of a plain -O2 build (bench/mist_bench.c:
@@ -199,16 +204,30 @@
  *          runs; 3.5x before its one-form rewrite); the iterative samplers
  *          1.0x to 1.1x); the batch forms vectorise and take 0.3x to 1.1x.
  *   clang  #pragma float_control(precise, on): inlined, no slower than
- *          -O2.  One gap (clang 14): calls of libm functions keep their
- *          fast-math flags, so a float square root may come from the
- *          reciprocal square root estimate, within 3.3 ulp instead of
- *          correctly rounded (measured over 3e8 floats); float results
- *          can differ in the last bits, two inlined copies of one call
- *          from each other.  Everything else holds (the numeric tests pass
- *          but tests/test_domain.c's bit-for-bit comparisons of two float
- *          direction samples).  Contraction inside mist is clang's default
- *          (-ffp-contract=on).  clang defines no macro for -fassociative-
- *          math or -freciprocal-math alone: only -ffast-math and
+ *          -O2.  The pragma reaches arithmetic and comparisons only (clang
+ *          14): the includer's flags stay on the ?: phis, the negations
+ *          and the calls (libm's and mist's own) inside mist's functions,
+ *          and with them nnan and ninf, which let the optimiser take such a
+ *          value to be finite and fold a floating-point test of it away (a
+ *          clamp of +inf to the largest value was folded to nothing: the
+ *          height fog gave NaN or +inf for infinite coefficients and lights,
+ *          mist_segment_linear(2, 2, INFINITY, 0, 1, &t) +inf).  So the
+ *          height fog's sanitisers of input test the bits (mist__pos,
+ *          mist__clampbig, mist__finite): every bad-input case of
+ *          tests/fastmath/ (270 of them: the height fog, its layers and the
+ *          step) gives what the precise build gives under clang -O2 and
+ *          -O3 -march=native -ffast-math (and gcc -O2 -ffast-math).
+ *          Elsewhere the bad-input handling tests floats; its tests pass
+ *          under clang -O2 -ffast-math (test_domain), but no bit test
+ *          backs it there.  And libm calls keep the flags, so a float
+ *          square root may come from the reciprocal square root estimate,
+ *          within 3.3 ulp instead of correctly rounded (measured over 3e8
+ *          floats); float results can differ in the last bits, two inlined
+ *          copies of one call from each other (tests/test_domain.c's
+ *          bit-for-bit comparisons of two float direction samples).
+ *          Contraction inside mist is clang's default (-ffp-contract=on).
+ *          clang defines no macro for -fassociative-math or
+ *          -freciprocal-math alone: only -ffast-math and
  *          -ffinite-math-only are seen, and guarded.
  *   Either way -ffast-math also links start-up code that flushes subnormal
  *   results to zero and reads subnormal inputs as zero (FTZ/DAZ), for the
@@ -3446,13 +3465,39 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
 #define MIST__XLIM  MIST__C(MIST__DBL ? 700 : 85)
 
-/* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
+/* x for x > 0 (at most the largest finite value), else 0 (NaN too), and
+ * whether x is finite: on the bits.  These are the height fog's
+ * sanitisers of input, and clang (14) gives the includer's fast-math flags
+ * (nnan, ninf) to the ?: phis, negations and calls inside mist's functions
+ * whatever the guard's pragma: a floating-point test there is folded away
+ * (+inf came through as +inf, NaN as NaN), an integer test of the bits is
+ * not (see FAST MATH at the top). */
 MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
 {
-    return x > MIST__C(0) ? (x < MIST__BIG ? x : MIST__BIG) : MIST__C(0);
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    if (b == 0 || (b >> (8 * sizeof b - 1)) != 0) return MIST__C(0);   /* +-0, sign set */
+    if ((b >> MIST__MB) >= (MIST__UB)MIST__EB)                          /* +inf, +NaN */
+        return b == ((MIST__UB)MIST__EB << MIST__MB) ? MIST__BIG : MIST__C(0);
+    return x;
 }
 
-MIST__F int MIST__FN(mist__finite)(MIST__T x) { return x - x == MIST__C(0); }
+/* x clamped to +-the largest finite value, NaN to 0: on the bits (above) */
+MIST__F MIST__T MIST__FN(mist__clampbig)(MIST__T x)
+{
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    if (((b >> MIST__MB) & (MIST__UB)MIST__EB) != (MIST__UB)MIST__EB) return x;
+    if ((b << (8 * sizeof b - MIST__MB)) != 0) return MIST__C(0);      /* NaN */
+    return (b >> (8 * sizeof b - 1)) != 0 ? -MIST__BIG : MIST__BIG;
+}
+
+MIST__F int MIST__FN(mist__finite)(MIST__T x)
+{
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    return ((b >> MIST__MB) & (MIST__UB)MIST__EB) != (MIST__UB)MIST__EB;
+}
 
 /* (n + ne) / H as hi + *lo (|lo| <= ~ulp(hi)): the remainder of the
  * rounded quotient is exact.  n + ne is renormalised first: a sum whose
@@ -3790,8 +3835,10 @@ MIST__F MIST__T MIST__FN(mist_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIS
  * all four are halved (exactly, but for subnormals) and *sx = 1: the
  * coefficients are (*sR, *sM, *st) 2^*sx, so the albedos stay <= 1 and
  * the optical depth takes the 2^*sx as an exponent (mist__hmul).  Returns
- * 0 when the fog (layer) is absent. */
-MIST__F int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST__T *sM,
+ * 0 when the fog (layer) is absent.  Always inlined: gcc 12 compiled its
+ * out-of-line copy's NaN test of the scale height as under -ffinite-math-
+ * only inside the fast-math guard (see FAST MATH). */
+MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST__T *sM,
                                     MIST__T *st, int *sx)
 {
     MIST__T r, m, er, em;
@@ -4608,8 +4655,8 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
     k0 = MIST__FN(mist__pos)(k0); k1 = MIST__FN(mist__pos)(k1);
     /* the sources clamped here, before any branch multiplies them (NaN: 0;
      * +-inf: +-the largest finite value) */
-    s0 = s0 < MIST__C(0) ? -MIST__FN(mist__pos)(-s0) : MIST__FN(mist__pos)(s0);
-    s1 = s1 < MIST__C(0) ? -MIST__FN(mist__pos)(-s1) : MIST__FN(mist__pos)(s1);
+    s0 = MIST__FN(mist__clampbig)(s0);
+    s1 = MIST__FN(mist__clampbig)(s1);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
         tr = length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG
