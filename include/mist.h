@@ -3397,8 +3397,17 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* density ratios, monotone along the ray.  The bound (rounding included)  */
 /* falls as 1/pieces^2.  Measured (Earth-like and three artist layers, 8    */
 /* pieces): median 1e-4 of the value, 90% below 1.2%, worst 20% (a ray     */
-/* rising 1 m per km to infinity); the actual error never above 0.95 of    */
-/* the bound in the tests, 0.97 in an independent check's random layers.   */
+/* rising 1 m per km to infinity); the actual error never above 0.97 of    */
+/* the bound in the tests and in an independent check's random layers.     */
+/* Gruss' bound is blind to the weight: on a piece that starts in a dense  */
+/* layer (a camera far below the base) it is the whole of c_max - c_min,   */
+/* so the smaller of it and a second bound is taken, from the shares'      */
+/* rate of change D = |w| (max 1/H - min 1/H) against the depth's growth   */
+/* (see the code); and shares taken from the logs (densities beyond the    */
+/* range) charge their rounding through each layer's share.  Over the     */
+/* tests' grid the bound is 3x the larger of the error and its rounding    */
+/* floor 4 (pieces + 8) eps L (median), 5.6x (90%), up to 1e9 (one piece   */
+/* to infinity along a nearly level ray: Gruss' c_max - c_min).            */
 /* Each share's variation is taken without cancellation: where the other   */
 /* layers' share of a layer's piece is below eps (an absorbing layer       */
 /* outweighing the scattering ones by 1/eps) 1 - share rounds to 1, and    */
@@ -4011,7 +4020,8 @@ MIST__F MIST__RGB MIST__FN(mist_hfog_apply)(const MIST__HFOG *fog, MIST__V3 orig
  * exactly: (yy - b_k)/H_k - (yy - b_i)/H_i = (yy - b_k)(1/H_k - 1/H_i)
  * + (b_i - b_k)/H_i.  *err (if not NULL): a bound on the rounding error
  * of the result (absolute: each operation's half ulp of the magnitudes it
- * meets, twice over), so e^result is known to relative *err. */
+ * meets, twice over; the height's term only where the scale heights
+ * differ, as x), so e^result is known to relative *err. */
 MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int (*sx)[3],
                                      const MIST__T *H, const MIST__T *lnd, int k, int i, int c,
                                      MIST__T yy, MIST__T *err)
@@ -4031,7 +4041,8 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
         *err = MIST__C(4) * MIST__EPS
              * (MIST__C(2) + MIST__M(fabs)(r) + MIST__M(fabs)(lr) + MIST__M(fabs)(MIST__M(log)(st[k][c]))
                 + MIST__M(fabs)(MIST__M(log)(st[i][c])) + MIST__M(fabs)(lnd[k])
-                + MIST__M(fabs)(lnd[i]) + (MIST__M(fabs)(yy) + bk) * (ik + ii) + (bi + bk) * ii);
+                + MIST__M(fabs)(lnd[i]) + (ik == ii ? MIST__C(0) : (MIST__M(fabs)(yy) + bk) * (ik + ii))
+                + (bi + bk) * ii);
     }
     return r;
 }
@@ -4039,6 +4050,17 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
 #ifndef MIST_HFOG_MAX_LAYERS
 #  define MIST_HFOG_MAX_LAYERS 8
 #endif
+
+/* A layer's extinction st rho at the start of its segment g, times 2^sx,
+ * scaled: r 2^*k (r in [1/2, 1), or 0), +inf where the density is beyond
+ * even that (mist__expmul_s). */
+MIST__F MIST__T MIST__FN(mist__hstart)(MIST__T st, const MIST__HRAY *g, int sx, int *k)
+{
+    *k = 0;
+    if (!(g->r0m <= MIST__BIG)) return (MIST__T)INFINITY;
+    return MIST__FN(mist__expmul_s)(st, g->r0m, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(0),
+                                    MIST__C(0), g->r0e + sx, k);
+}
 
 /* Several exponential layers along one ray: see the section comment.
  * Domain: n >= 1 layers (layers NULL or n < 1: transmittance 1, in-scatter
@@ -4189,14 +4211,15 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     ? MIST__FN(mist__hray_eval)(y, w, MIST__C(0), s, layers[k].base, H[k], d0[k])
                     : MIST__FN(mist__hray_eval)(y, w, tb[j], dt, layers[k].base, H[k], d0[k]);
             for (c = 0; c < 3; ++c) {
-                MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), wsum = MIST__C(0), lerr = MIST__C(0);
+                MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), wsum = MIST__C(0), dsh = MIST__C(0);
+                MIST__T le[MIST_HFOG_MAX_LAYERS], gsh[2] = { MIST__C(0), MIST__C(0) };
                 MIST__T wk[MIST_HFOG_MAX_LAYERS], lk[MIST_HFOG_MAX_LAYERS], ca[MIST_HFOG_MAX_LAYERS];
                 MIST__T wm[MIST_HFOG_MAX_LAYERS];
                 MIST__T cu[MIST_HFOG_MAX_LAYERS], famb = MIST__C(0), fsun = MIST__C(0), lmax = MIST__C(0);
-                MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2], ls0 = ls[c];
+                MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2];
                 int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0;
                 for (k = 0; k < n; ++k) {
-                    wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = MIST__C(0);   /* (set below
+                    wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = le[k] = MIST__C(0);   /* (set below
                                              * where used: gcc 12 -O2/-O3 -Wall
                                              * could not tell) */
                     ke[k] = 0;
@@ -4233,28 +4256,40 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                  * optical depth (scaled by the largest's exponent), or for
                  * an unbounded piece its share at the start: of st rho0
                  * (scaled), or where a density is beyond even that, from
-                 * the logs (rounded to lerr, which enters the bound) */
+                 * the logs (rounded to le[k], which enters the bound) */
                 if (unb) {
                     have = 0;
                     for (k = 0; k < n; ++k) {
                         if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                        wk[k] = seg[k].r0m <= MIST__BIG
-                              ? MIST__FN(mist__expmul_s)(st[k][c], seg[k].r0m, MIST__C(1), MIST__C(1),
-                                                         MIST__C(1), MIST__C(0), MIST__C(0),
-                                                         seg[k].r0e + sx[k][c], &ke[k])
-                              : (MIST__T)INFINITY;
+                        wk[k] = MIST__FN(mist__hstart)(st[k][c], &seg[k], sx[k][c], &ke[k]);
                         if (!(wk[k] <= MIST__BIG)) unb = 2;
                         else if (wk[k] > MIST__C(0) && (!have || ke[k] > emax)) { emax = ke[k]; have = 1; }
                     }
                     if (!have) unb = 2;
                 }
+                if (unb == 2) {
+                    /* the logs relative to the dominant layer kx (found
+                     * against ref first): its own is 0 exactly, so that
+                     * another's rounding (le[k], far more than its value
+                     * where the ray's height over H is huge) enters the
+                     * bound through that layer's share alone (below) */
+                    MIST__T lbest = MIST__C(0);
+                    int kx = ref;
+                    for (k = 0; k < n; ++k) {
+                        MIST__T e;
+                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        e = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c, y + w * tb[j],
+                                                 MIST__NULL);
+                        if (k == ref || e > lbest) { lbest = e; kx = k; }
+                    }
+                    ref = kx;
+                }
                 for (k = 0; k < n; ++k) {
-                    MIST__T e;
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
                     if (unb == 2) {
-                        lk[k] = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c,
-                                                     y + w * tb[j], &e);
-                        if (e > lerr) lerr = e;
+                        lk[k] = k == ref ? MIST__C(0)
+                              : MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c,
+                                                     y + w * tb[j], &le[k]);
                         if (k == ref || lk[k] > lmax) lmax = lk[k];
                     } else {
                         wm[k] = wk[k];
@@ -4285,6 +4320,22 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                                                          MIST__C(0), MIST__C(0), ke[k] - emax);
                     }
                 }
+                if (unb == 2)
+                    /* the shares' rounding: w_k = e^(lk - lmax) within
+                     * e^+-x, x = le[k] + eps (2 + |lk - lmax|) (exp and its
+                     * argument); dsh = sum_k f_k (e^x - 1) and gsh = sum_k
+                     * c_k f_k (e^x - 1) (ambient, sun), f_k = w_k / wsum */
+                    for (k = 0; k < n; ++k) {
+                        MIST__T x, t;
+                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        x = le[k] + MIST__EPS * (MIST__C(2) + MIST__M(fabs)(lk[k] - lmax));
+                        t = wk[k] > MIST__C(0) && x < MIST__XLIM ? wk[k] * MIST__FN(mist__expm1)(x)
+                                                                : MIST__M(exp)(lk[k] - lmax + x);
+                        t = t / wsum;
+                        dsh += t;
+                        if (ca[k] > MIST__C(0)) gsh[0] += ca[k] * t;
+                        if (cu[k] > MIST__C(0)) gsh[1] += cu[k] * t;
+                    }
                 gj = MIST__M(exp)(-tj[c]);
                 om = dtau <= MIST__BIG ? -MIST__FN(mist__expm1)(-dtau)
                                        : MIST__C(1);                      /* 1 - e^-dtau */
@@ -4340,8 +4391,109 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         * 1e-40 of a subnormal in-scatter, 1.9x its bound) */
                     osc += oi >= MIST__C(0) ? oi : MIST__C(1);   /* NaN: all */
                 }
-                bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * gj * om
-                       * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
+                {
+                    MIST__T gr = MIST__C(0.5) * (cmax[0] - cmin[0]) * osc
+                               * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
+                    /* A second bound, for a piece that starts in a dense
+                     * layer (a camera far below the base), where Gruss',
+                     * blind to the weight e^-sigma (sigma the piece's optical
+                     * depth), is the whole of c_max - c_min.  Along the piece
+                     * each ratio of two layers' extinctions moves by
+                     * e^(+-D s) at most, D = |w| (max 1/H - min 1/H), so each
+                     * share f_i(s) is within e^(+-D s) of f_i(0) and
+                     * |F(s) - F(0)| <= (c_max - c_min) min((1 - f0) (e^(D s) - 1), 1),
+                     * f0 the largest share at the start.  Against e^-sigma
+                     * dsigma, sigma' >= m on [0, s*], s* = ln 3 / D (m from
+                     * each layer's density at the start and at s*; e^x - 1
+                     * <= 3x below ln 3), the estimate's error is at most
+                     * (c_max - c_min) (min(1.5, 3 (1 - f0)) D / m + e^(-m s*))
+                     * (or (1 - f0) D / (m - D) + e^(-m s*), no tail down), plus
+                     * om (c_max - c_min)/2 sum_i |fbar_i - f_i(0)| where the
+                     * estimate's shares fbar are the piece's column means
+                     * (bounded pieces; the unbounded one takes f(0) itself). */
+                    if (gr > MIST__C(0) && om > MIST__C(0)) {
+                        MIST__T imin = MIST__C(0), imax = MIST__C(0), dd, sst, m = MIST__C(0), e2;
+                        MIST__T f0 = MIST__C(0), sdiff = MIST__C(0), wz[MIST_HFOG_MAX_LAYERS], zs = MIST__C(0);
+                        int fi = 1, kz[MIST_HFOG_MAX_LAYERS], ez = 0, okz = 1;
+                        for (k = 0; k < n; ++k) {
+                            MIST__T ih;
+                            wz[k] = MIST__C(0); kz[k] = 0;
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            ih = H[k] <= MIST__BIG ? MIST__C(1) / H[k] : MIST__C(0);
+                            if (fi || ih < imin) imin = ih;
+                            if (fi || ih > imax) imax = ih;
+                            /* the shares at the start, scaled (their own
+                             * where the piece's are the start's) */
+                            if (!unb) {
+                                wz[k] = MIST__FN(mist__hstart)(st[k][c], &seg[k], sx[k][c], &kz[k]);
+                                if (!(wz[k] <= MIST__BIG)) okz = 0;
+                                else if (wz[k] > MIST__C(0) && (fi || kz[k] > ez)) ez = kz[k];
+                            }
+                            fi = 0;
+                        }
+                        for (k = 0; k < n && okz; ++k) {
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            if (!unb) wz[k] = MIST__FN(mist__ldexp)(wz[k], kz[k] - ez);
+                            else wz[k] = wk[k];
+                            zs += wz[k];
+                        }
+                        okz = okz && zs > MIST__C(0);
+                        for (k = 0; k < n && okz; ++k) {
+                            MIST__T fb, fz;
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            fz = wz[k] / zs;
+                            if (fz > f0) f0 = fz;
+                            if (!unb) {   /* each share to (n + 4) eps: its scaled
+                                           * product, the sum of n, the quotient */
+                                fb = wk[k] / wsum;
+                                sdiff += (fb > fz ? fb - fz : fz - fb) + (MIST__T)(n + 8) * MIST__EPS * (fb + fz);
+                            }
+                        }
+                        dd = (w < MIST__C(0) ? -w : w) * (imax - imin);
+                        sst = dd > MIST__C(0) ? MIST__C(1.0986122886681098) / dd : (MIST__T)INFINITY;
+                        for (k = 0; k < n && okz; ++k)
+                            if (ok[k] && st[k][c] > MIST__C(0))
+                                m += MIST__FN(mist__hmul)(st[k][c], MIST__C(1), MIST__C(1), MIST__C(1),
+                                                          seg[k].r0m, seg[k].r0e + sx[k][c],
+                                                          w > MIST__C(0) && H[k] <= MIST__BIG
+                                                          ? w * (sst / H[k]) : MIST__C(0));
+                        if (okz && m > MIST__C(0)) {
+                            MIST__T f1 = MIST__C(1) - f0 + (MIST__T)(n + 8) * MIST__EPS, a = MIST__C(3) * f1;
+                            MIST__T tl = MIST__M(exp)(-(m * sst));
+                            MIST__T b = (a < MIST__C(1.5) ? a : MIST__C(1.5)) * (dd / m) + tl;
+                            /* or, the depth's distribution below that of
+                             * sigma = m s (to s*; down: everywhere, no tail)
+                             * against the increasing (1 - f0)(e^(D s) - 1):
+                             * (1 - f0) D / (m - D) */
+                            if (m > dd) {
+                                MIST__T b2 = f1 * (dd / (m - dd)) + (w > MIST__C(0) ? tl : MIST__C(0));
+                                if (b2 < b) b = b2;
+                            }
+                            e2 = (cmax[0] - cmin[0]) * (b / om + MIST__C(0.5) * sdiff);
+                            if (e2 < gr) gr = e2;
+                        }
+                    }
+                    bd[c] += gr * gj * om;
+                }
+                /* Shares from the logs (unb == 2), each weight w_k within a
+                 * factor e^+-x_k of its value, x_k = 0 for the dominant one:
+                 * the true shares are f_k e^-h_k / D, |h_k| <= x_k, D =
+                 * sum_j f_j e^-h_j within dsh of 1, so F = sum c_k f_k moves
+                 * by at most (gsh + F dsh) / (1 - dsh), and never by more
+                 * than c_max - c_min.  Proportional to the other layers'
+                 * shares, not to the rounding of their logs: that was 4 x
+                 * the largest le[k] of the whole piece (a camera 1e8 scale
+                 * heights below the base: 191 times the value in float,
+                 * 3e9 eps in double, where the value is right to 2 eps). */
+                if (unb == 2) {
+                    MIST__T ea = dsh < MIST__C(1) ? (gsh[0] + famb * dsh) / (MIST__C(1) - dsh)
+                                                  : (MIST__T)INFINITY;
+                    MIST__T es = dsh < MIST__C(1) ? (gsh[1] + fsun * dsh) / (MIST__C(1) - dsh)
+                                                  : (MIST__T)INFINITY;
+                    gsh[0] = ea < cmax[0] - cmin[0] ? ea : cmax[0] - cmin[0];
+                    gsh[1] = es < cmax[1] - cmin[1] ? es : cmax[1] - cmin[1];
+                    if (gsh[0] > MIST__C(0)) bd[c] += gsh[0] * gj * om;   /* as famb's */
+                }
                 if (sunx && ly > MIST__C(0)) {
                     MIST__T pj = psi[c] + tj[c], pk = dtau <= MIST__BIG ? psi1 + tj[c] + dtau : (MIST__T)INFINITY;
                     MIST__T plo = pj < pk ? pj : pk, el = MIST__M(exp)(-plo), ej = MIST__M(exp)(-pj);
@@ -4377,11 +4529,11 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     ob = MIST__C(0.5) * (cmax[1] - cmin[1]) * osc * dg;
                     if (ob > MIST__C(0)) bd[c] += ob * fac;   /* (0 x inf: 0; it was
                         * NaN, reported +inf, where nu = 0 and dtau = inf) */
+                    if (unb == 2 && gsh[1] > MIST__C(0) && el > MIST__C(0) && gs > MIST__C(0))
+                        bd[c] += MIST__FN(mist__expmul_k)(gsh[1], el, gs, MIST__C(1), MIST__C(1),
+                                                          MIST__C(0), MIST__C(0), kl);   /* as fsun's */
                     psi[c] = psi1;
                 }
-                /* shares from the logs: each weight to 2 lerr, their
-                 * normalised values to 4 lerr (relative) */
-                if (lerr > MIST__C(0)) bd[c] += MIST__C(4) * lerr * (ls[c] - ls0);
                 tj[c] += dtau;
             }
         }

@@ -804,7 +804,8 @@ static mist_hfog layer(double base, double dens, double H, double r0, double r1,
 
 static double ml_worst_ratio = 0, ml_worst_T = 0, ml_tight = 0;
 static int ml_checked = 0, ml_nrel = 0;
-static double ml_rel[4096];
+static double ml_rel[4096], ml_q[4096];
+static int ml_nq = 0;
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -867,6 +868,15 @@ static void ml_case(const mist_hfog *ly, int nl, double y, double w, double s, c
                  "%s layers L within bound (y=%g w=%g s=%g pieces %d ch %d): %.17g ref %.17Lg, "
                  "error %.3Lg > bound %.3g", what, y, w, s, pieces, c, got_L, Lref, err, bnd);
         if (bnd > 0 && err / bnd > ml_worst_ratio) ml_worst_ratio = (double)(err / bnd);
+        /* how far the bound is above the larger of the error and its
+         * rounding floor, 4 (pieces + 8) eps L (reported, not a bar: the
+         * shares' variation is bounded by Gruss' inequality, blind to the
+         * weight e^-tau, and is the whole of c_max - c_min on one piece to
+         * infinity) */
+        if (Lref > 1e-300L && ml_nq < 4096) {
+            LD fl = 4.0L * (pieces + 8) * 0x1p-53L * fabsl(Lref);
+            ml_q[ml_nq++] = (double)(bnd / (err > fl ? err : fl));
+        }
         if (Lref > 1e-300L && pieces == 8 && bnd / Lref > ml_tight) ml_tight = (double)(bnd / Lref);
         if (Lref > 1e-300L && pieces == 8 && ml_nrel < 4096) ml_rel[ml_nrel++] = (double)(bnd / Lref);
         ++ml_checked;
@@ -933,11 +943,14 @@ static void test_layers(void)
                     ml_case(atm, 2, yb[ib], wb[jb], sb[kb], pb, 4, "absorber");
     }
     qsort(ml_rel, (size_t)ml_nrel, sizeof *ml_rel, cmp_d);
+    qsort(ml_q, (size_t)ml_nq, sizeof *ml_q, cmp_d);
     printf("layers: %d in-scatter values within their bound (worst error/bound %.3f); with 8 "
            "pieces the bound is %.2g of the value (median), %.2g (90%%), %.2g (max); "
            "transmittance worst %.2f eps (1 + tau)  (%.1f s)\n",
            ml_checked, ml_worst_ratio, ml_rel[ml_nrel / 2], ml_rel[ml_nrel * 9 / 10], ml_tight,
            ml_worst_T, (double)(clock() - t0) / CLOCKS_PER_SEC);
+    printf("layers: bound / max(error, 4 (pieces + 8) eps L): %.3g (median), %.3g (90%%), %.3g (99%%), "
+           "%.3g (max)\n", ml_q[ml_nq / 2], ml_q[ml_nq * 9 / 10], ml_q[ml_nq * 99 / 100], ml_q[ml_nq - 1]);
 }
 
 /* The sun along the view (nu = 0) over an infinite optical depth: a layer
@@ -981,6 +994,159 @@ static void test_layers_nu0(void)
                  "float layers, nu = 0, infinite depth (pieces %d): L %.9g bound %g", p,
                  (double)Lf.r, (double)Bf.r);
     }
+}
+
+/* A camera 1e4 and 1e8 scale heights (of the denser, 1.2 km layer) below
+ * the Earth-like layers' base, double and float: the density at the camera
+ * is beyond every range (e^1e4, e^1e8), so T = 0 and all the in-scatter
+ * comes from within e^-1e4 of the camera, where the 1.2 km layer outweighs
+ * the 8 km one by e^8500 at least: L = that layer's albedo x light, its
+ * limit (ambient plus the sun through its phase function, or ambient alone
+ * where the sun is dimmed: its column above is infinite), exact.  The bound
+ * must hold and say something: at most its rounding floor, 4 (pieces + 8)
+ * eps L (the most pieces it may take; the sum over them and a few eps each),
+ * plus 4 eps L for the shares taken from the logs (the dominant layer's
+ * weight within e^(2 eps) of its value, the other's below e^-8500 with its
+ * rounding), plus 4 eps L of margin, plus (n + 8) eps |c_R - c_M| (n = 2
+ * layers) for the rounding of the shares compared at the piece's start
+ * (c_k the layers' albedo x light); the shares' variation along the
+ * ray's weight is below e^-8500.  (The logs' rounding, eps times the ray's
+ * height over H, was charged to the whole value: 191 times the value in
+ * float, 3e9 eps in double, where it is right to 2 eps; and with one piece
+ * up to infinity Gruss' bound, blind to the weight e^-tau, was c_max -
+ * c_min: 1e15 eps.) */
+static void test_layers_far_below(void)
+{
+    static const double ys[] = { -1.2e7, -1.2e11 }, wv[] = { 0.8, 0.1, -0.5 };
+    static const double sv[] = { 1e5, INFINITY };
+    static const int pv[] = { 1, 8, 64 };
+    double worst = 0, worst_e = 0;
+    size_t iy, iw, is, ip;
+    int flt, sx, c;
+    for (flt = 0; flt < 2; ++flt)
+        for (sx = 0; sx < 2; ++sx)
+            for (iy = 0; iy < 2; ++iy)
+                for (iw = 0; iw < 3; ++iw)
+                    for (is = 0; is < 2; ++is)
+                        for (ip = 0; ip < 3; ++ip) {
+                            mist_hfog a[2];
+                            double got[3], bnd[3], u, eps = flt ? 0x1p-24 : 0x1p-53;
+                            double w = wv[iw], wx = sqrt((1 - w) * (1 + w)), lx = cos(0.1745), lyv = sin(0.1745);
+                            LD alb, La[3], E, ER;
+                            a[0] = layer(0, 1, 8000, 5.8e-6, 13.5e-6, 33.1e-6, 0, 0, 0, 0.9, 0);
+                            a[1] = layer(0, 1, 1200, 0, 0, 0, 2.2e-5, 2.2e-5, 2.2e-5, 0.9, 0.76);
+                            a[0].sun.r = a[0].sun.g = a[0].sun.b = 10;
+                            a[0].ambient.r = 0.2; a[0].ambient.g = 0.3; a[0].ambient.b = 0.5;
+                            a[0].sun_extinction = sx;
+                            if (!flt) {
+                                mist_vec3 o = { 0, 0, 0 }, d;
+                                mist_rgb T, L, B;
+                                o.y = ys[iy];
+                                d.x = wx; d.y = w; d.z = 0;
+                                a[0].sun_dir.x = lx; a[0].sun_dir.y = lyv; a[0].sun_dir.z = 0;
+                                mist_hfog_layers_eval(a, 2, o, d, sv[is], pv[ip], &T, &L, &B);
+                                got[0] = L.r; got[1] = L.g; got[2] = L.b;
+                                bnd[0] = B.r; bnd[1] = B.g; bnd[2] = B.b;
+                                u = lx * wx + lyv * w;
+                                alb = (LD)a[1].mie_scat.r / a[1].mie_ext.r;
+                                E = (LD)a[0].sun.r * mist_fog_eval(a[1].mie_phase, u);
+                                ER = (LD)a[0].sun.r * mist_rayleigh_eval(u);
+                                mt_check(T.r == 0, "far below: T %g", T.r);
+                            } else {
+                                mist_hfogf f[2];
+                                mist_vec3f o = { 0, 0, 0 }, d;
+                                mist_rgbf T, L, B;
+                                int k;
+                                memset(f, 0, sizeof f);
+                                for (k = 0; k < 2; ++k) {
+                                    f[k].density = 1; f[k].scale_height = (float)a[k].scale_height;
+                                    f[k].rayleigh_scat.r = f[k].rayleigh_ext.r = (float)a[k].rayleigh_ext.r;
+                                    f[k].rayleigh_scat.g = f[k].rayleigh_ext.g = (float)a[k].rayleigh_ext.g;
+                                    f[k].rayleigh_scat.b = f[k].rayleigh_ext.b = (float)a[k].rayleigh_ext.b;
+                                    f[k].mie_ext.r = f[k].mie_ext.g = f[k].mie_ext.b = (float)a[k].mie_ext.r;
+                                    f[k].mie_scat.r = f[k].mie_scat.g = f[k].mie_scat.b = (float)a[k].mie_scat.r;
+                                    f[k].mie_phase = mist_fog_makef(k ? 0.76f : 0, 0, 0, 0);
+                                }
+                                f[0].sun.r = f[0].sun.g = f[0].sun.b = 10;
+                                f[0].ambient.r = 0.2f; f[0].ambient.g = 0.3f; f[0].ambient.b = 0.5f;
+                                f[0].sun_extinction = sx;
+                                f[0].sun_dir.x = (float)lx; f[0].sun_dir.y = (float)lyv; f[0].sun_dir.z = 0;
+                                o.y = (float)ys[iy];
+                                d.x = (float)wx; d.y = (float)w; d.z = 0;
+                                mist_hfog_layers_evalf(f, 2, o, d, (float)sv[is], pv[ip], &T, &L, &B);
+                                got[0] = L.r; got[1] = L.g; got[2] = L.b;
+                                bnd[0] = B.r; bnd[1] = B.g; bnd[2] = B.b;
+                                u = (double)(f[0].sun_dir.x * d.x + f[0].sun_dir.y * d.y);
+                                alb = (LD)f[1].mie_scat.r / f[1].mie_ext.r;
+                                E = (LD)f[0].sun.r * mist_fog_evalf(f[1].mie_phase, (float)u);
+                                ER = (LD)f[0].sun.r * mist_rayleigh_evalf((float)u);
+                                mt_check(T.r == 0, "far below: T %g", (double)T.r);
+                            }
+                            La[0] = flt ? (LD)0.2f : (LD)0.2; La[1] = flt ? (LD)0.3f : (LD)0.3;
+                            La[2] = flt ? (LD)0.5f : (LD)0.5;
+                            for (c = 0; c < 3; ++c) {
+                                LD ref = alb * (La[c] + (sx ? 0 : E)), err = fabsl((LD)got[c] - ref);
+                                LD cR = La[c] + (sx ? 0 : ER);          /* the 8 km layer: albedo 1 */
+                                double floor_ = (4.0 * (pv[ip] + 8) + 8) * eps * (double)ref
+                                              + 10 * eps * (double)fabsl(cR - ref);
+                                if ((double)(err / ref) / eps > worst_e) worst_e = (double)(err / ref) / eps;
+                                if (bnd[c] / ((double)ref * eps) > worst) worst = bnd[c] / ((double)ref * eps);
+                                mt_check(err <= bnd[c] && bnd[c] <= floor_,
+                                         "layers far below, %s%s y=%g w=%g s=%g pieces %d ch %d: "
+                                         "%.17g ref %.17Lg (error %.2Lg eps), bound %.3g eps (at most %.0f)",
+                                         flt ? "float" : "double", sx ? " dimmed" : "", ys[iy], w, sv[is],
+                                         pv[ip], c, got[c], ref, err / ref / eps, bnd[c] / ((double)ref * eps),
+                                         floor_ / ((double)ref * eps));
+                            }
+                        }
+    /* Two layers of one scale height (1 km), bases 0 and 500 m, 1e8 scale
+     * heights below: the shares are constant, 1/(1 + e^0.5) and the rest
+     * (albedos 1 and 0.5, ambient 1: L = f + (1 - f)/2), neither negligible,
+     * and the shares come from the logs, whose rounding is a few eps of
+     * their terms (mist__lrel: 4 eps (3 + 2 |ln st|) here, the height's term
+     * absent for one scale height; it had 2e8 x 4 eps): the bound at most
+     * the floor above plus twice that of L. */
+    for (flt = 0; flt < 2; ++flt)
+        for (iy = 0; iy < 2; ++iy) {
+            static const double yh[] = { -1e7, -1e11 };
+            double eps = flt ? 0x1p-24 : 0x1p-53, got, bnd, floor_;
+            LD f = 1 / (1 + expl(0.5L)), ref = f + (1 - f) / 2, err;
+            if (!flt) {
+                mist_hfog b[2];
+                mist_vec3 o = { 0, 0, 0 }, d = { 0.6, 0.8, 0 };
+                mist_rgb T, L, B;
+                memset(b, 0, sizeof b);
+                b[0] = layer(0, 1, 1000, 0, 0, 0, 1e-3, 0, 0, 1, 0.5);
+                b[1] = layer(500, 1, 1000, 0, 0, 0, 1e-3, 0, 0, 0.5, 0.5);
+                b[0].ambient.r = 1;
+                o.y = yh[iy];
+                mist_hfog_layers_eval(b, 2, o, d, INFINITY, 8, &T, &L, &B);
+                got = L.r; bnd = B.r;
+            } else {
+                mist_hfogf b[2];
+                mist_vec3f o = { 0, 0, 0 }, d = { 0.6f, 0.8f, 0 };
+                mist_rgbf T, L, B;
+                memset(b, 0, sizeof b);
+                for (c = 0; c < 2; ++c) {
+                    b[c].density = 1; b[c].scale_height = 1000; b[c].base = c ? 500.0f : 0.0f;
+                    b[c].mie_ext.r = 1e-3f; b[c].mie_scat.r = c ? 0.5e-3f : 1e-3f;
+                    b[c].mie_phase = mist_fog_makef(0.5f, 0, 0, 0);
+                }
+                b[0].ambient.r = 1;
+                o.y = (float)yh[iy];
+                mist_hfog_layers_evalf(b, 2, o, d, INFINITY, 8, &T, &L, &B);
+                got = L.r; bnd = B.r;
+            }
+            if (flt) ref = f + (1 - f) * ((LD)0.5e-3f / (LD)1e-3f);
+            err = fabsl((LD)got - ref);
+            floor_ = ((4.0 * (8 + 8) + 8) + 2 * 4 * (3 + 2 * fabs(log(1e-3)))) * eps * (double)ref;
+            mt_check(err <= bnd && bnd <= floor_,
+                     "layers far below, one scale height, %s y=%g: %.17g ref %.17Lg (error %.2Lg eps), "
+                     "bound %.3g eps (at most %.0f)", flt ? "float" : "double", yh[iy], got, ref,
+                     err / ref / eps, bnd / ((double)ref * eps), floor_ / ((double)ref * eps));
+        }
+    printf("layers, camera far below: error at most %.2f eps, bound at most %.1f eps of the value\n",
+           worst_e, worst);
 }
 
 /* Float: a scattering layer whose share of the extinction is 1e-40 at the
@@ -1780,7 +1946,8 @@ int main(int argc, char **argv)
     ref_tol = 4e-18L;
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
-    if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny(); }
+    if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny();
+                                          test_layers_far_below(); }
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long();
                                           test_segment_inf_source(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }
