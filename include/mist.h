@@ -189,7 +189,12 @@
  *          calls in tests/test_domain.c failed (mist_fog_eval at w_d > 1
  *          against mist_draine_eval: gcc's constant-propagated copy of a
  *          function; it comes and goes with the shape of the calling code,
- *          cause not pinned down).  The cost: gcc does
+ *          cause not pinned down).  gcc 12 also compiled an out-of-line
+ *          copy of a guarded helper (the height fog's mist__hlayer, once
+ *          it passed the inlining limit) with its NaN test as under
+ *          -ffinite-math-only, though the copy carried the guard's
+ *          attribute (cause not pinned down): that helper is always
+ *          inlined (tests/fastmath/).  The cost: gcc does
  *          not inline a function with other floating-point flags into a
  *          fast-math caller, so every mist call stays a call: 1x to 3.5x
  *          the time per call of a plain -O2 build (bench/mist_bench.c:
@@ -199,16 +204,30 @@
  *          runs; 3.5x before its one-form rewrite); the iterative samplers
  *          1.0x to 1.1x); the batch forms vectorise and take 0.3x to 1.1x.
  *   clang  #pragma float_control(precise, on): inlined, no slower than
- *          -O2.  One gap (clang 14): calls of libm functions keep their
- *          fast-math flags, so a float square root may come from the
- *          reciprocal square root estimate, within 3.3 ulp instead of
- *          correctly rounded (measured over 3e8 floats); float results
- *          can differ in the last bits, two inlined copies of one call
- *          from each other.  Everything else holds (the numeric tests pass
- *          but tests/test_domain.c's bit-for-bit comparisons of two float
- *          direction samples).  Contraction inside mist is clang's default
- *          (-ffp-contract=on).  clang defines no macro for -fassociative-
- *          math or -freciprocal-math alone: only -ffast-math and
+ *          -O2.  The pragma reaches arithmetic and comparisons only (clang
+ *          14): the includer's flags stay on the ?: phis, the negations
+ *          and the calls (libm's and mist's own) inside mist's functions,
+ *          and with them nnan and ninf, which let the optimiser take such a
+ *          value to be finite and fold a floating-point test of it away (a
+ *          clamp of +inf to the largest value was folded to nothing: the
+ *          height fog gave NaN or +inf for infinite coefficients and lights,
+ *          mist_segment_linear(2, 2, INFINITY, 0, 1, &t) +inf).  So the
+ *          height fog's sanitisers of input test the bits (mist__pos,
+ *          mist__clampbig, mist__finite): every bad-input case of
+ *          tests/fastmath/ (270 of them: the height fog, its layers and the
+ *          step) gives what the precise build gives under clang -O2 and
+ *          -O3 -march=native -ffast-math (and gcc -O2 -ffast-math).
+ *          Elsewhere the bad-input handling tests floats; its tests pass
+ *          under clang -O2 -ffast-math (test_domain), but no bit test
+ *          backs it there.  And libm calls keep the flags, so a float
+ *          square root may come from the reciprocal square root estimate,
+ *          within 3.3 ulp instead of correctly rounded (measured over 3e8
+ *          floats); float results can differ in the last bits, two inlined
+ *          copies of one call from each other (tests/test_domain.c's
+ *          bit-for-bit comparisons of two float direction samples).
+ *          Contraction inside mist is clang's default (-ffp-contract=on).
+ *          clang defines no macro for -fassociative-math or
+ *          -freciprocal-math alone: only -ffast-math and
  *          -ffinite-math-only are seen, and guarded.
  *   Either way -ffast-math also links start-up code that flushes subnormal
  *   results to zero and reads subnormal inputs as zero (FTZ/DAZ), for the
@@ -3378,8 +3397,17 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* density ratios, monotone along the ray.  The bound (rounding included)  */
 /* falls as 1/pieces^2.  Measured (Earth-like and three artist layers, 8    */
 /* pieces): median 1e-4 of the value, 90% below 1.2%, worst 20% (a ray     */
-/* rising 1 m per km to infinity); the actual error never above 0.95 of    */
-/* the bound in the tests, 0.97 in an independent check's random layers.   */
+/* rising 1 m per km to infinity); the actual error never above 0.97 of    */
+/* the bound in the tests and in an independent check's random layers.     */
+/* Gruss' bound is blind to the weight: on a piece that starts in a dense  */
+/* layer (a camera far below the base) it is the whole of c_max - c_min,   */
+/* so the smaller of it and a second bound is taken, from the shares'      */
+/* rate of change D = |w| (max 1/H - min 1/H) against the depth's growth   */
+/* (see the code); and shares taken from the logs (densities beyond the    */
+/* range) charge their rounding through each layer's share.  Over the     */
+/* tests' grid the bound is 3x the larger of the error and its rounding    */
+/* floor 4 (pieces + 8) eps L (median), 5.6x (90%), up to 1e9 (one piece   */
+/* to infinity along a nearly level ray: Gruss' c_max - c_min).            */
 /* Each share's variation is taken without cancellation: where the other   */
 /* layers' share of a layer's piece is below eps (an absorbing layer       */
 /* outweighing the scattering ones by 1/eps) 1 - share rounds to 1, and    */
@@ -3446,13 +3474,39 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
 #define MIST__XLIM  MIST__C(MIST__DBL ? 700 : 85)
 
-/* x for x > 0 (at most the largest finite value), else 0 (NaN too). */
+/* x for x > 0 (at most the largest finite value), else 0 (NaN too), and
+ * whether x is finite: on the bits.  These are the height fog's
+ * sanitisers of input, and clang (14) gives the includer's fast-math flags
+ * (nnan, ninf) to the ?: phis, negations and calls inside mist's functions
+ * whatever the guard's pragma: a floating-point test there is folded away
+ * (+inf came through as +inf, NaN as NaN), an integer test of the bits is
+ * not (see FAST MATH at the top). */
 MIST__F MIST__T MIST__FN(mist__pos)(MIST__T x)
 {
-    return x > MIST__C(0) ? (x < MIST__BIG ? x : MIST__BIG) : MIST__C(0);
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    if (b == 0 || (b >> (8 * sizeof b - 1)) != 0) return MIST__C(0);   /* +-0, sign set */
+    if ((b >> MIST__MB) >= (MIST__UB)MIST__EB)                          /* +inf, +NaN */
+        return b == ((MIST__UB)MIST__EB << MIST__MB) ? MIST__BIG : MIST__C(0);
+    return x;
 }
 
-MIST__F int MIST__FN(mist__finite)(MIST__T x) { return x - x == MIST__C(0); }
+/* x clamped to +-the largest finite value, NaN to 0: on the bits (above) */
+MIST__F MIST__T MIST__FN(mist__clampbig)(MIST__T x)
+{
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    if (((b >> MIST__MB) & (MIST__UB)MIST__EB) != (MIST__UB)MIST__EB) return x;
+    if ((b << (8 * sizeof b - MIST__MB)) != 0) return MIST__C(0);      /* NaN */
+    return (b >> (8 * sizeof b - 1)) != 0 ? -MIST__BIG : MIST__BIG;
+}
+
+MIST__F int MIST__FN(mist__finite)(MIST__T x)
+{
+    MIST__UB b;
+    memcpy(&b, &x, sizeof b);
+    return ((b >> MIST__MB) & (MIST__UB)MIST__EB) != (MIST__UB)MIST__EB;
+}
 
 /* (n + ne) / H as hi + *lo (|lo| <= ~ulp(hi)): the remainder of the
  * rounded quotient is exact.  n + ne is renormalised first: a sum whose
@@ -3795,8 +3849,10 @@ MIST__F MIST__T MIST__FN(mist_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIS
  * all four are halved (exactly, but for subnormals) and *sx = 1: the
  * coefficients are (*sR, *sM, *st) 2^*sx, so the albedos stay <= 1 and
  * the optical depth takes the 2^*sx as an exponent (mist__hmul).  Returns
- * 0 when the fog (layer) is absent. */
-MIST__F int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST__T *sM,
+ * 0 when the fog (layer) is absent.  Always inlined: gcc 12 compiled its
+ * out-of-line copy's NaN test of the scale height as under -ffinite-math-
+ * only inside the fast-math guard (see FAST MATH). */
+MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T *sR, MIST__T *sM,
                                     MIST__T *st, int *sx)
 {
     MIST__T r, m, er, em;
@@ -3849,7 +3905,10 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
             MIST__V3 l = MIST__FN(mist__unit)(fog->sun_dir);
             MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
             pR = MIST__FN(mist_rayleigh_eval)(u);
-            pM = MIST__FN(mist__fog_eval)(&fog->mie_phase, u);
+            /* a Dirac lobe on its peak: +inf counts as the largest finite
+             * value, clamped here, before phi1(tau), 1 - T or phi1(z)
+             * multiply it (else the factor is lost: 5% at tau = 0.1) */
+            pM = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
             ly = l.y;
             if (ly > MIST__C(0)) {              /* nu = 1 - w / ly, exact near 0 */
                 nu = (ly - w) / ly;             /* (its sign) */
@@ -3966,7 +4025,8 @@ MIST__F MIST__RGB MIST__FN(mist_hfog_apply)(const MIST__HFOG *fog, MIST__V3 orig
  * exactly: (yy - b_k)/H_k - (yy - b_i)/H_i = (yy - b_k)(1/H_k - 1/H_i)
  * + (b_i - b_k)/H_i.  *err (if not NULL): a bound on the rounding error
  * of the result (absolute: each operation's half ulp of the magnitudes it
- * meets, twice over), so e^result is known to relative *err. */
+ * meets, twice over; the height's term only where the scale heights
+ * differ, as x), so e^result is known to relative *err. */
 MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int (*sx)[3],
                                      const MIST__T *H, const MIST__T *lnd, int k, int i, int c,
                                      MIST__T yy, MIST__T *err)
@@ -3986,7 +4046,8 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
         *err = MIST__C(4) * MIST__EPS
              * (MIST__C(2) + MIST__M(fabs)(r) + MIST__M(fabs)(lr) + MIST__M(fabs)(MIST__M(log)(st[k][c]))
                 + MIST__M(fabs)(MIST__M(log)(st[i][c])) + MIST__M(fabs)(lnd[k])
-                + MIST__M(fabs)(lnd[i]) + (MIST__M(fabs)(yy) + bk) * (ik + ii) + (bi + bk) * ii);
+                + MIST__M(fabs)(lnd[i]) + (ik == ii ? MIST__C(0) : (MIST__M(fabs)(yy) + bk) * (ik + ii))
+                + (bi + bk) * ii);
     }
     return r;
 }
@@ -3994,6 +4055,17 @@ MIST__F MIST__T MIST__FN(mist__lrel)(const MIST__HFOG *ls, MIST__T (*st)[3], int
 #ifndef MIST_HFOG_MAX_LAYERS
 #  define MIST_HFOG_MAX_LAYERS 8
 #endif
+
+/* A layer's extinction st rho at the start of its segment g, times 2^sx,
+ * scaled: r 2^*k (r in [1/2, 1), or 0), +inf where the density is beyond
+ * even that (mist__expmul_s). */
+MIST__F MIST__T MIST__FN(mist__hstart)(MIST__T st, const MIST__HRAY *g, int sx, int *k)
+{
+    *k = 0;
+    if (!(g->r0m <= MIST__BIG)) return (MIST__T)INFINITY;
+    return MIST__FN(mist__expmul_s)(st, g->r0m, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(0),
+                                    MIST__C(0), g->r0e + sx, k);
+}
 
 /* Several exponential layers along one ray: see the section comment.
  * Domain: n >= 1 layers (layers NULL or n < 1: transmittance 1, in-scatter
@@ -4017,6 +4089,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
     MIST__T tau[3], tr[3], ls[3], bd[3], E[3], La[3], tb[65];
     MIST__T w = 0, y = origin.y, s = length, pR = 0, ly = 0, anu = 0;
     int ok[MIST_HFOG_MAX_LAYERS], k, i, c, j, np = 0, cs = 0, same = 1, sunx = 0, any = 0;
+    int lx[3] = { 0, 0, 0 };
     MIST__V3 v;
     for (c = 0; c < 3; ++c) { tau[c] = MIST__C(0); tr[c] = MIST__C(1); ls[c] = bd[c] = MIST__C(0); }
     if (!layers || n < 1 || !(s > MIST__C(0)) || !MIST__FN(mist__finite)(y)) goto out;
@@ -4050,10 +4123,30 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
         MIST__V3 l = MIST__FN(mist__unit)(layers[0].sun_dir);
         MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
         pR = MIST__FN(mist_rayleigh_eval)(u);
-        for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist__fog_eval)(&layers[k].mie_phase, u);
+        for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&layers[k].mie_phase, u));
         E[0]  = layers[0].sun.r;     E[1]  = layers[0].sun.g;     E[2]  = layers[0].sun.b;
         La[0] = layers[0].ambient.r; La[1] = layers[0].ambient.g; La[2] = layers[0].ambient.b;
         for (c = 0; c < 3; ++c) { E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]); }
+        /* The lights' scale 2^lx[c]: albedo x light (ca, cu below) is at
+         * most La + E p, p the largest phase value (a Dirac lobe's is the
+         * largest finite value), which may leave the range though the
+         * in-scatter, times 1 - T, does not.  Where La + E p may pass
+         * 2^(MAX_EXP - 5) (room for the bound's sums, < 16 c), everything
+         * linear in the lights is carried times 2^-lx[c] (exactly, in the
+         * scaled products) and scaled back once at the end. */
+        {
+            MIST__T pmax = pR;
+            int eE, eL, ep, m;
+            for (k = 0; k < n; ++k) if (pM[k] > pmax) pmax = pM[k];
+            (void)MIST__FN(mist__frexp)(pmax, &ep);
+            for (c = 0; c < 3; ++c) {
+                (void)MIST__FN(mist__frexp)(E[c], &eE);
+                (void)MIST__FN(mist__frexp)(La[c], &eL);
+                m = E[c] > MIST__C(0) && eE + ep > eL ? eE + ep : eL;   /* La + E p < 2^(m+1) */
+                m = m + 1 - ((MIST__EB >> 1) + 1 - 5);
+                lx[c] = m > 0 ? m : 0;
+            }
+        }
         sunx = layers[0].sun_extinction != 0;
         ly = l.y;
         if (ly > MIST__C(0)) {   /* anu = |nu| ly, nu = 1 - w/ly (|nu| overflows for tiny ly) */
@@ -4123,14 +4216,15 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     ? MIST__FN(mist__hray_eval)(y, w, MIST__C(0), s, layers[k].base, H[k], d0[k])
                     : MIST__FN(mist__hray_eval)(y, w, tb[j], dt, layers[k].base, H[k], d0[k]);
             for (c = 0; c < 3; ++c) {
-                MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), wsum = MIST__C(0), lerr = MIST__C(0);
+                MIST__T dtau = MIST__C(0), psi1 = MIST__C(0), wsum = MIST__C(0), dsh = MIST__C(0);
+                MIST__T le[MIST_HFOG_MAX_LAYERS], gsh[2] = { MIST__C(0), MIST__C(0) };
                 MIST__T wk[MIST_HFOG_MAX_LAYERS], lk[MIST_HFOG_MAX_LAYERS], ca[MIST_HFOG_MAX_LAYERS];
                 MIST__T wm[MIST_HFOG_MAX_LAYERS];
                 MIST__T cu[MIST_HFOG_MAX_LAYERS], famb = MIST__C(0), fsun = MIST__C(0), lmax = MIST__C(0);
-                MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2], ls0 = ls[c];
+                MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2];
                 int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0;
                 for (k = 0; k < n; ++k) {
-                    wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = MIST__C(0);   /* (set below
+                    wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = le[k] = MIST__C(0);   /* (set below
                                              * where used: gcc 12 -O2/-O3 -Wall
                                              * could not tell) */
                     ke[k] = 0;
@@ -4155,9 +4249,11 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     if (first) ref = k;
                     first = 0;
                     /* albedo x light: ambient (and undimmed sun), dimmed sun */
-                    cu[k] = MIST__FN(mist__expmul)(E[c], sR[k][c], pR, MIST__C(1), st[k][c], MIST__C(0), MIST__C(0))
-                          + MIST__FN(mist__expmul)(E[c], sM[k][c], pM[k], MIST__C(1), st[k][c], MIST__C(0), MIST__C(0));
-                    ca[k] = MIST__FN(mist__expmul)(La[c], sR[k][c] + sM[k][c], MIST__C(1), MIST__C(1), st[k][c], MIST__C(0), MIST__C(0)) + (sunx ? MIST__C(0) : cu[k]);
+                    /* (times 2^-lx[c]: the lights' scale above) */
+                    cu[k] = MIST__FN(mist__expmul_k)(E[c], sR[k][c], pR, MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c])
+                          + MIST__FN(mist__expmul_k)(E[c], sM[k][c], pM[k], MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c]);
+                    ca[k] = MIST__FN(mist__expmul_k)(La[c], sR[k][c] + sM[k][c], MIST__C(1), MIST__C(1), st[k][c], MIST__C(0), MIST__C(0), -lx[c])
+                          + (sunx ? MIST__C(0) : cu[k]);
                 }
                 if (unb) dtau = (MIST__T)INFINITY;
                 if (!(dtau > MIST__C(0)) && !have) continue;   /* (dtau may underflow) */
@@ -4165,28 +4261,40 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                  * optical depth (scaled by the largest's exponent), or for
                  * an unbounded piece its share at the start: of st rho0
                  * (scaled), or where a density is beyond even that, from
-                 * the logs (rounded to lerr, which enters the bound) */
+                 * the logs (rounded to le[k], which enters the bound) */
                 if (unb) {
                     have = 0;
                     for (k = 0; k < n; ++k) {
                         if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                        wk[k] = seg[k].r0m <= MIST__BIG
-                              ? MIST__FN(mist__expmul_s)(st[k][c], seg[k].r0m, MIST__C(1), MIST__C(1),
-                                                         MIST__C(1), MIST__C(0), MIST__C(0),
-                                                         seg[k].r0e + sx[k][c], &ke[k])
-                              : (MIST__T)INFINITY;
+                        wk[k] = MIST__FN(mist__hstart)(st[k][c], &seg[k], sx[k][c], &ke[k]);
                         if (!(wk[k] <= MIST__BIG)) unb = 2;
                         else if (wk[k] > MIST__C(0) && (!have || ke[k] > emax)) { emax = ke[k]; have = 1; }
                     }
                     if (!have) unb = 2;
                 }
+                if (unb == 2) {
+                    /* the logs relative to the dominant layer kx (found
+                     * against ref first): its own is 0 exactly, so that
+                     * another's rounding (le[k], far more than its value
+                     * where the ray's height over H is huge) enters the
+                     * bound through that layer's share alone (below) */
+                    MIST__T lbest = MIST__C(0);
+                    int kx = ref;
+                    for (k = 0; k < n; ++k) {
+                        MIST__T e;
+                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        e = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c, y + w * tb[j],
+                                                 MIST__NULL);
+                        if (k == ref || e > lbest) { lbest = e; kx = k; }
+                    }
+                    ref = kx;
+                }
                 for (k = 0; k < n; ++k) {
-                    MIST__T e;
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
                     if (unb == 2) {
-                        lk[k] = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c,
-                                                     y + w * tb[j], &e);
-                        if (e > lerr) lerr = e;
+                        lk[k] = k == ref ? MIST__C(0)
+                              : MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c,
+                                                     y + w * tb[j], &le[k]);
                         if (k == ref || lk[k] > lmax) lmax = lk[k];
                     } else {
                         wm[k] = wk[k];
@@ -4217,6 +4325,22 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                                                          MIST__C(0), MIST__C(0), ke[k] - emax);
                     }
                 }
+                if (unb == 2)
+                    /* the shares' rounding: w_k = e^(lk - lmax) within
+                     * e^+-x, x = le[k] + eps (2 + |lk - lmax|) (exp and its
+                     * argument); dsh = sum_k f_k (e^x - 1) and gsh = sum_k
+                     * c_k f_k (e^x - 1) (ambient, sun), f_k = w_k / wsum */
+                    for (k = 0; k < n; ++k) {
+                        MIST__T x, t;
+                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        x = le[k] + MIST__EPS * (MIST__C(2) + MIST__M(fabs)(lk[k] - lmax));
+                        t = wk[k] > MIST__C(0) && x < MIST__XLIM ? wk[k] * MIST__FN(mist__expm1)(x)
+                                                                : MIST__M(exp)(lk[k] - lmax + x);
+                        t = t / wsum;
+                        dsh += t;
+                        if (ca[k] > MIST__C(0)) gsh[0] += ca[k] * t;
+                        if (cu[k] > MIST__C(0)) gsh[1] += cu[k] * t;
+                    }
                 gj = MIST__M(exp)(-tj[c]);
                 om = dtau <= MIST__BIG ? -MIST__FN(mist__expm1)(-dtau)
                                        : MIST__C(1);                      /* 1 - e^-dtau */
@@ -4272,8 +4396,109 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                         * 1e-40 of a subnormal in-scatter, 1.9x its bound) */
                     osc += oi >= MIST__C(0) ? oi : MIST__C(1);   /* NaN: all */
                 }
-                bd[c] += MIST__C(0.5) * (cmax[0] - cmin[0]) * osc * gj * om
-                       * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
+                {
+                    MIST__T gr = MIST__C(0.5) * (cmax[0] - cmin[0]) * osc
+                               * (dtau < MIST__C(4) ? MIST__C(0.25) * dtau : MIST__C(1));
+                    /* A second bound, for a piece that starts in a dense
+                     * layer (a camera far below the base), where Gruss',
+                     * blind to the weight e^-sigma (sigma the piece's optical
+                     * depth), is the whole of c_max - c_min.  Along the piece
+                     * each ratio of two layers' extinctions moves by
+                     * e^(+-D s) at most, D = |w| (max 1/H - min 1/H), so each
+                     * share f_i(s) is within e^(+-D s) of f_i(0) and
+                     * |F(s) - F(0)| <= (c_max - c_min) min((1 - f0) (e^(D s) - 1), 1),
+                     * f0 the largest share at the start.  Against e^-sigma
+                     * dsigma, sigma' >= m on [0, s*], s* = ln 3 / D (m from
+                     * each layer's density at the start and at s*; e^x - 1
+                     * <= 3x below ln 3), the estimate's error is at most
+                     * (c_max - c_min) (min(1.5, 3 (1 - f0)) D / m + e^(-m s*))
+                     * (or (1 - f0) D / (m - D) + e^(-m s*), no tail down), plus
+                     * om (c_max - c_min)/2 sum_i |fbar_i - f_i(0)| where the
+                     * estimate's shares fbar are the piece's column means
+                     * (bounded pieces; the unbounded one takes f(0) itself). */
+                    if (gr > MIST__C(0) && om > MIST__C(0)) {
+                        MIST__T imin = MIST__C(0), imax = MIST__C(0), dd, sst, m = MIST__C(0), e2;
+                        MIST__T f0 = MIST__C(0), sdiff = MIST__C(0), wz[MIST_HFOG_MAX_LAYERS], zs = MIST__C(0);
+                        int fi = 1, kz[MIST_HFOG_MAX_LAYERS], ez = 0, okz = 1;
+                        for (k = 0; k < n; ++k) {
+                            MIST__T ih;
+                            wz[k] = MIST__C(0); kz[k] = 0;
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            ih = H[k] <= MIST__BIG ? MIST__C(1) / H[k] : MIST__C(0);
+                            if (fi || ih < imin) imin = ih;
+                            if (fi || ih > imax) imax = ih;
+                            /* the shares at the start, scaled (their own
+                             * where the piece's are the start's) */
+                            if (!unb) {
+                                wz[k] = MIST__FN(mist__hstart)(st[k][c], &seg[k], sx[k][c], &kz[k]);
+                                if (!(wz[k] <= MIST__BIG)) okz = 0;
+                                else if (wz[k] > MIST__C(0) && (fi || kz[k] > ez)) ez = kz[k];
+                            }
+                            fi = 0;
+                        }
+                        for (k = 0; k < n && okz; ++k) {
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            if (!unb) wz[k] = MIST__FN(mist__ldexp)(wz[k], kz[k] - ez);
+                            else wz[k] = wk[k];
+                            zs += wz[k];
+                        }
+                        okz = okz && zs > MIST__C(0);
+                        for (k = 0; k < n && okz; ++k) {
+                            MIST__T fb, fz;
+                            if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                            fz = wz[k] / zs;
+                            if (fz > f0) f0 = fz;
+                            if (!unb) {   /* each share to (n + 4) eps: its scaled
+                                           * product, the sum of n, the quotient */
+                                fb = wk[k] / wsum;
+                                sdiff += (fb > fz ? fb - fz : fz - fb) + (MIST__T)(n + 8) * MIST__EPS * (fb + fz);
+                            }
+                        }
+                        dd = (w < MIST__C(0) ? -w : w) * (imax - imin);
+                        sst = dd > MIST__C(0) ? MIST__C(1.0986122886681098) / dd : (MIST__T)INFINITY;
+                        for (k = 0; k < n && okz; ++k)
+                            if (ok[k] && st[k][c] > MIST__C(0))
+                                m += MIST__FN(mist__hmul)(st[k][c], MIST__C(1), MIST__C(1), MIST__C(1),
+                                                          seg[k].r0m, seg[k].r0e + sx[k][c],
+                                                          w > MIST__C(0) && H[k] <= MIST__BIG
+                                                          ? w * (sst / H[k]) : MIST__C(0));
+                        if (okz && m > MIST__C(0)) {
+                            MIST__T f1 = MIST__C(1) - f0 + (MIST__T)(n + 8) * MIST__EPS, a = MIST__C(3) * f1;
+                            MIST__T tl = MIST__M(exp)(-(m * sst));
+                            MIST__T b = (a < MIST__C(1.5) ? a : MIST__C(1.5)) * (dd / m) + tl;
+                            /* or, the depth's distribution below that of
+                             * sigma = m s (to s*; down: everywhere, no tail)
+                             * against the increasing (1 - f0)(e^(D s) - 1):
+                             * (1 - f0) D / (m - D) */
+                            if (m > dd) {
+                                MIST__T b2 = f1 * (dd / (m - dd)) + (w > MIST__C(0) ? tl : MIST__C(0));
+                                if (b2 < b) b = b2;
+                            }
+                            e2 = (cmax[0] - cmin[0]) * (b / om + MIST__C(0.5) * sdiff);
+                            if (e2 < gr) gr = e2;
+                        }
+                    }
+                    bd[c] += gr * gj * om;
+                }
+                /* Shares from the logs (unb == 2), each weight w_k within a
+                 * factor e^+-x_k of its value, x_k = 0 for the dominant one:
+                 * the true shares are f_k e^-h_k / D, |h_k| <= x_k, D =
+                 * sum_j f_j e^-h_j within dsh of 1, so F = sum c_k f_k moves
+                 * by at most (gsh + F dsh) / (1 - dsh), and never by more
+                 * than c_max - c_min.  Proportional to the other layers'
+                 * shares, not to the rounding of their logs: that was 4 x
+                 * the largest le[k] of the whole piece (a camera 1e8 scale
+                 * heights below the base: 191 times the value in float,
+                 * 3e9 eps in double, where the value is right to 2 eps). */
+                if (unb == 2) {
+                    MIST__T ea = dsh < MIST__C(1) ? (gsh[0] + famb * dsh) / (MIST__C(1) - dsh)
+                                                  : (MIST__T)INFINITY;
+                    MIST__T es = dsh < MIST__C(1) ? (gsh[1] + fsun * dsh) / (MIST__C(1) - dsh)
+                                                  : (MIST__T)INFINITY;
+                    gsh[0] = ea < cmax[0] - cmin[0] ? ea : cmax[0] - cmin[0];
+                    gsh[1] = es < cmax[1] - cmin[1] ? es : cmax[1] - cmin[1];
+                    if (gsh[0] > MIST__C(0)) bd[c] += gsh[0] * gj * om;   /* as famb's */
+                }
                 if (sunx && ly > MIST__C(0)) {
                     MIST__T pj = psi[c] + tj[c], pk = dtau <= MIST__BIG ? psi1 + tj[c] + dtau : (MIST__T)INFINITY;
                     MIST__T plo = pj < pk ? pj : pk, el = MIST__M(exp)(-plo), ej = MIST__M(exp)(-pj);
@@ -4309,11 +4534,11 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                     ob = MIST__C(0.5) * (cmax[1] - cmin[1]) * osc * dg;
                     if (ob > MIST__C(0)) bd[c] += ob * fac;   /* (0 x inf: 0; it was
                         * NaN, reported +inf, where nu = 0 and dtau = inf) */
+                    if (unb == 2 && gsh[1] > MIST__C(0) && el > MIST__C(0) && gs > MIST__C(0))
+                        bd[c] += MIST__FN(mist__expmul_k)(gsh[1], el, gs, MIST__C(1), MIST__C(1),
+                                                          MIST__C(0), MIST__C(0), kl);   /* as fsun's */
                     psi[c] = psi1;
                 }
-                /* shares from the logs: each weight to 2 lerr, their
-                 * normalised values to 4 lerr (relative) */
-                if (lerr > MIST__C(0)) bd[c] += MIST__C(4) * lerr * (ls[c] - ls0);
                 tj[c] += dtau;
             }
         }
@@ -4328,6 +4553,10 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                   + MIST__C(4) * (MIST__T)(np + 8) * MIST__EPS * ls[c] + MIST__C(8) * MIST__EPS * rnd[c]
                   + (MIST__T)(np * (2 * n + 8)) * tsub;
             if (!(bd[c] >= MIST__C(0))) bd[c] = (MIST__T)INFINITY;   /* beyond range: none */
+            if (lx[c]) {                        /* the lights' scale, back */
+                ls[c] = MIST__FN(mist__ldexp)(ls[c], lx[c]);
+                bd[c] = MIST__FN(mist__ldexp)(bd[c], lx[c]);
+            }
         }
     }
 out:
@@ -4581,8 +4810,10 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
 {
     MIST__T p, q, w0, w1, tr = MIST__C(1), r = MIST__C(0);
     k0 = MIST__FN(mist__pos)(k0); k1 = MIST__FN(mist__pos)(k1);
-    if (!(s0 == s0)) s0 = MIST__C(0);
-    if (!(s1 == s1)) s1 = MIST__C(0);
+    /* the sources clamped here, before any branch multiplies them (NaN: 0;
+     * +-inf: +-the largest finite value) */
+    s0 = MIST__FN(mist__clampbig)(s0);
+    s1 = MIST__FN(mist__clampbig)(s1);
     if (length > MIST__C(0)) {
         p = k0 * length; q = k1 * length;
         tr = length <= MIST__BIG && p <= MIST__BIG && q <= MIST__BIG
@@ -4603,53 +4834,70 @@ MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0
         } else {
             /* k len beyond the range (or len = +inf): e^-tau(1) = 0, and
              * the large-argument forms of mist__seg_w are taken with the
-             * length scaled out: len M0 and len M1 directly, through
-             * sqrt(len) (M0 ~ 1/p, M1 ~ 1/p^2 or G/(2b)). */
-            MIST__T m0, m1, rl = MIST__M(sqrt)(length), sd, g, f;
+             * length scaled out: len M0 = n0 / d0 and len M1 = n1 / d1 2^e1
+             * (M0 ~ 1/p, M1 ~ 1/p^2 or G/(2b)), each term s len M one
+             * scaled product (mist__expmul_s): len M1 ~ len / p^2 is below
+             * the range where s len M1 is not (1e300 k0, len 1: 1e-600, for
+             * a source near the largest value, 1.8e-292). */
+            MIST__T n0, d0 = MIST__C(1), n1, d1, rt = MIST__C(0), a0, a1, x, sd, g, f;
+            MIST__T rl = MIST__M(sqrt)(length);
+            int e0, e1 = 0, e;
             tr = k0 > MIST__C(0) || k1 > MIST__C(0) ? MIST__C(0) : MIST__C(1);
             if (!(length <= MIST__BIG)) {       /* the limit: k0 and s0 throughout */
                 if (transmittance) *transmittance = tr;
                 if (k0 > MIST__C(0)) return s0 / k0;
                 return s0 == MIST__C(0) ? MIST__C(0) : s0 * (MIST__T)INFINITY;
             }
-            /* with x = k0 sqrt(len) / (2 sd): len M0 = sqrt(pi) x erfcx(x)
-             * / k0 = (1 - G(x)) / k0 (rising), 2 x F(x) / k0 = (1 + K(x)) /
-             * k0 (falling) where x >= 1: no sqrt(len) / sd, which overflows
-             * (k, len near the largest value: found by the fuzzer) */
-            if (k1 > k0) {                      /* rising: erfcx */
-                MIST__T x;
-                sd = MIST__M(sqrt)(MIST__C(0.5) * (k1 - k0));
+            /* with x = k0 sqrt(len) / (2 sd), 2 x^2 = k0^2 len / |k1 - k0|:
+             * where x >= 1, len M0 = sqrt(pi) x erfcx(x) / k0 = (1 - G(x)) / k0
+             * (rising), 2 x F(x) / k0 = (1 + K(x)) / k0 (falling), and
+             * len M1 = G / |k1 - k0| = h / (k0^2 len), h = 2 x^2 G (K): near 1
+             * and flat in x, so the roundings of x cancel (constant: h = 1);
+             * no sqrt(len) / sd, which overflows (k, len near the largest
+             * value: found by the fuzzer).  Below (rising only: falling has
+             * x > 19 here), len M0 = sqrt(pi)/2 (sqrt(len) / sd) erfcx(x),
+             * len M1 = G / (k1 - k0).  W0 = M0 - M1 = M0 (1 - rt), rt =
+             * M1 / M0 in [0, 1/2]: h / (p (1 -+ G)) (0 where p = k0 len
+             * overflows), or G / (sqrt(pi) sd sqrt(len) erfcx(x)). */
+            x = MIST__C(1);
+            n0 = n1 = MIST__C(1);               /* constant (k0 > 0: p, q finite) */
+            d1 = MIST__C(1);
+            if (k1 != k0) {
+                MIST__T dk = k1 > k0 ? k1 - k0 : k0 - k1;
+                sd = MIST__M(sqrt)(MIST__C(0.5) * dk);
                 x = MIST__C(0.5) * (k0 / sd) * rl;
-                f = MIST__FN(mist__erfcx)(x, &g);
-                m0 = x >= MIST__C(1) ? (MIST__C(1) - g) / k0
-                                     : MIST__C(0.5) * MIST__C(MIST__SQRTPI) * (rl / sd) * f;
-                m1 = g / (k1 - k0);
-            } else if (k1 < k0) {               /* falling: Dawson */
-                MIST__T x;
-                sd = MIST__M(sqrt)(MIST__C(0.5) * (k0 - k1));
-                x = MIST__C(0.5) * (k0 / sd) * rl;
-                f = MIST__FN(mist__dawson)(x, &g);
-                m0 = x >= MIST__C(1) ? (MIST__C(1) + g) / k0 : (rl / sd) * f;
-                m1 = g / (k0 - k1);
-            } else if (k0 > MIST__C(0)) {       /* constant: len M1 = 1/(k0 p) */
-                m0 = MIST__C(1) / k0;
-                m1 = p <= MIST__BIG ? m0 / p : m0 / k0 / length;
-            } else {                            /* unreachable: p, q finite */
-                m0 = length; m1 = MIST__C(0.5) * length;
+                f = k1 > k0 ? MIST__FN(mist__erfcx)(x, &g) : MIST__FN(mist__dawson)(x, &g);
+                if (x >= MIST__C(1)) {
+                    n0 = k1 > k0 ? MIST__C(1) - g : MIST__C(1) + g;
+                    /* h = 2 x^2 G: 1 to rounding where x^2 would overflow */
+                    n1 = x < MIST__C(MIST__DBL ? 1e150 : 1e18) ? MIST__C(2) * x * x * g : MIST__C(1);
+                } else {
+                    n0 = MIST__C(0.5) * MIST__C(MIST__SQRTPI) * f * rl;
+                    n1 = g;
+                    d0 = sd; d1 = dk;
+                    rt = g / (MIST__C(MIST__SQRTPI) * sd * rl * f);
+                }
             }
-            w0 = m0 - m1; w1 = m1;
-            r = (s0 != MIST__C(0) ? s0 * w0 : MIST__C(0)) + (s1 != MIST__C(0) ? s1 * w1 : MIST__C(0));
-            if (!MIST__FN(mist__finite)(r)) {
-                /* a term beyond the range (+inf - inf was NaN): the sources'
-                 * exponents apart (w0, w1 < len / 745 are finite), summed
-                 * at the larger, the result rounded once into the range */
-                int e0, e1, e;
-                MIST__T f0 = MIST__FN(mist__frexp)(s0, &e0) * w0;
-                MIST__T f1 = MIST__FN(mist__frexp)(s1, &e1) * w1;
-                e = e0 > e1 ? e0 : e1;
-                r = MIST__FN(mist__ldexp)(MIST__FN(mist__ldexp)(f0, e0 - e)
-                                          + MIST__FN(mist__ldexp)(f1, e1 - e), e);
+            if (x >= MIST__C(1)) {              /* d1 2^-e1 = k0^2 len, exactly scaled */
+                int ek, el;
+                MIST__T mk = MIST__FN(mist__frexp)(k0, &ek), ml = MIST__FN(mist__frexp)(length, &el);
+                MIST__T pp = k0 * length;
+                d0 = k0;
+                d1 = mk * mk * ml;
+                e1 = -(2 * ek + el);
+                rt = pp <= MIST__BIG ? n1 / (pp * n0) : MIST__C(0);
             }
+            /* s0 n0 (1 - rt) / d0 + s1 n1 / d1 2^e1: each a scaled product,
+             * summed at the larger exponent and rounded once into the range
+             * (a term beyond it, or +inf - inf, loses nothing) */
+            a0 = MIST__FN(mist__expmul_s)(s0 < MIST__C(0) ? -s0 : s0, n0, MIST__C(1) - rt, MIST__C(1), d0,
+                                          MIST__C(0), MIST__C(0), 0, &e0);
+            a1 = MIST__FN(mist__expmul_s)(s1 < MIST__C(0) ? -s1 : s1, n1, MIST__C(1), MIST__C(1), d1,
+                                          MIST__C(0), MIST__C(0), e1, &e1);
+            if (s0 < MIST__C(0)) a0 = -a0;
+            if (s1 < MIST__C(0)) a1 = -a1;
+            e = a0 == MIST__C(0) ? e1 : (a1 == MIST__C(0) || e0 > e1 ? e0 : e1);
+            r = MIST__FN(mist__ldexp)(MIST__FN(mist__ldexp)(a0, e0 - e) + MIST__FN(mist__ldexp)(a1, e1 - e), e);
         }
     }
     if (transmittance) *transmittance = tr;

@@ -710,6 +710,79 @@ static void test_sun_cases(void)
              "undimmed sun = phase-weighted ambient: %.17g", l3.r);
 }
 
+/* A Dirac Mie lobe (|g| = 1) seen on its peak: its +inf density counts as
+ * the largest finite value P (documented), and the in-scatter is then
+ * E sM P I, I the reference's integral (undimmed: int rho e^-tau; dimmed:
+ * int rho e^-(tau + sun depth)), for mist_hfog_eval and a single layer of
+ * mist_hfog_layers_eval alike.  The sun lies along the view (u = 1, l_y = w:
+ * nu = 0), optical depths 1e-3, 0.1 and 3.  E = 10 and albedo 0.5: E P
+ * and the albedo times it leave the range where E P (1 - T) sM / st does
+ * not (tau <= 0.1; at tau 3 the result itself is beyond it: +inf).  The
+ * bar is the grid's, BAR eps (1 + tau + sun depth): the same closed
+ * forms, with P an exact factor.  (Clamped
+ * after phi1(tau) or 1 - T multiplied it, P lost that factor: 5% high at
+ * tau 0.1, 1/phi1(3) = 3.2x at tau 3; the layered form lost E where E P
+ * overflowed: 10x low.) */
+static void test_dirac(void)
+{
+    static const double sg[] = { 1e-5, 1e-3, 3e-2 };
+    const double H = 1000, w = 0.6, len = 100;
+    int is_float, m, lay, sx;
+    double worst = 0;
+    for (is_float = 0; is_float < 2; ++is_float) {
+        double eps = is_float ? 0x1p-24 : 0x1p-53, P = is_float ? FLT_MAX : DBL_MAX;
+        ref_t r;
+        memset(&r, 0, sizeof r);
+        r.y = 0; r.yb = 0; r.H = H; r.d0 = 1;
+        r.w = is_float ? (LD)(float)w : (LD)w;
+        r.ly = r.w;
+        r.nsig = 3;
+        for (m = 0; m < 3; ++m) r.sig[m] = is_float ? (LD)(float)sg[m] : (LD)sg[m];
+        ref_run(&r, len);
+        for (lay = 0; lay < 2; ++lay)
+            for (sx = 0; sx < 2; ++sx)
+                for (m = 0; m < 3; ++m) {
+                    double got, sM;
+                    LD tau = r.sig[m] * r.C, ref, e;
+                    if (!is_float) {
+                        mist_hfog f;
+                        mist_vec3 o = { 0, 0, 0 }, d = { 0.8, 0.6, 0 };
+                        mist_rgb t, l, b;
+                        memset(&f, 0, sizeof f);
+                        f.density = 1; f.scale_height = H;
+                        f.mie_ext.r = sg[m]; f.mie_scat.r = 0.5 * sg[m];
+                        f.mie_phase = mist_fog_make(1, 0, 0, 0);
+                        f.sun_dir = d; f.sun.r = 10; f.sun_extinction = sx;
+                        if (lay) mist_hfog_layers_eval(&f, 1, o, d, len, 8, &t, &l, &b);
+                        else mist_hfog_eval(&f, o, d, len, &t, &l);
+                        got = l.r; sM = f.mie_scat.r;
+                    } else {
+                        mist_hfogf f;
+                        mist_vec3f o = { 0, 0, 0 }, d = { 0.8f, 0.6f, 0 };
+                        mist_rgbf t, l, b;
+                        memset(&f, 0, sizeof f);
+                        f.density = 1; f.scale_height = (float)H;
+                        f.mie_ext.r = (float)sg[m]; f.mie_scat.r = 0.5f * f.mie_ext.r;
+                        f.mie_phase = mist_fog_makef(1, 0, 0, 0);
+                        f.sun_dir = d; f.sun.r = 10; f.sun_extinction = sx;
+                        if (lay) mist_hfog_layers_evalf(&f, 1, o, d, (float)len, 8, &t, &l, &b);
+                        else mist_hfog_evalf(&f, o, d, (float)len, &t, &l);
+                        got = l.r; sM = f.mie_scat.r;
+                    }
+                    ref = 10 * (LD)sM * (LD)P * (sx ? r.Is[m] : r.I[m]);
+                    /* sun depth at the lower end (the camera): st rho0 H / l_y */
+                    e = fabsl((LD)got - ref) / ((LD)eps * (1 + tau + (sx ? r.sig[m] * H / r.ly : 0)) * ref);
+                    if (got != got) e = INFINITY;
+                    if (ref > (LD)P) e = got == INFINITY ? 0 : INFINITY;   /* beyond the range */
+                    if ((double)e > worst) worst = (double)e;
+                    mt_check(e <= BAR, "Dirac lobe on its peak, %s %s%s tau=%.3Lg: %.17g ref %.17Lg (%.2Lf)",
+                             is_float ? "float" : "double", lay ? "layers" : "eval",
+                             sx ? " dimmed" : "", tau, got, ref, e);
+                }
+    }
+    printf("Dirac lobe on its peak: worst %.2f eps (1 + tau + sun depth)\n", worst);
+}
+
 /* ------------------------------------------------------------------------ */
 /* Several layers                                                           */
 /* ------------------------------------------------------------------------ */
@@ -731,7 +804,8 @@ static mist_hfog layer(double base, double dens, double H, double r0, double r1,
 
 static double ml_worst_ratio = 0, ml_worst_T = 0, ml_tight = 0;
 static int ml_checked = 0, ml_nrel = 0;
-static double ml_rel[4096];
+static double ml_rel[4096], ml_q[4096];
+static int ml_nq = 0;
 
 static int cmp_d(const void *a, const void *b)
 {
@@ -794,6 +868,15 @@ static void ml_case(const mist_hfog *ly, int nl, double y, double w, double s, c
                  "%s layers L within bound (y=%g w=%g s=%g pieces %d ch %d): %.17g ref %.17Lg, "
                  "error %.3Lg > bound %.3g", what, y, w, s, pieces, c, got_L, Lref, err, bnd);
         if (bnd > 0 && err / bnd > ml_worst_ratio) ml_worst_ratio = (double)(err / bnd);
+        /* how far the bound is above the larger of the error and its
+         * rounding floor, 4 (pieces + 8) eps L (reported, not a bar: the
+         * shares' variation is bounded by Gruss' inequality, blind to the
+         * weight e^-tau, and is the whole of c_max - c_min on one piece to
+         * infinity) */
+        if (Lref > 1e-300L && ml_nq < 4096) {
+            LD fl = 4.0L * (pieces + 8) * 0x1p-53L * fabsl(Lref);
+            ml_q[ml_nq++] = (double)(bnd / (err > fl ? err : fl));
+        }
         if (Lref > 1e-300L && pieces == 8 && bnd / Lref > ml_tight) ml_tight = (double)(bnd / Lref);
         if (Lref > 1e-300L && pieces == 8 && ml_nrel < 4096) ml_rel[ml_nrel++] = (double)(bnd / Lref);
         ++ml_checked;
@@ -860,11 +943,14 @@ static void test_layers(void)
                     ml_case(atm, 2, yb[ib], wb[jb], sb[kb], pb, 4, "absorber");
     }
     qsort(ml_rel, (size_t)ml_nrel, sizeof *ml_rel, cmp_d);
+    qsort(ml_q, (size_t)ml_nq, sizeof *ml_q, cmp_d);
     printf("layers: %d in-scatter values within their bound (worst error/bound %.3f); with 8 "
            "pieces the bound is %.2g of the value (median), %.2g (90%%), %.2g (max); "
            "transmittance worst %.2f eps (1 + tau)  (%.1f s)\n",
            ml_checked, ml_worst_ratio, ml_rel[ml_nrel / 2], ml_rel[ml_nrel * 9 / 10], ml_tight,
            ml_worst_T, (double)(clock() - t0) / CLOCKS_PER_SEC);
+    printf("layers: bound / max(error, 4 (pieces + 8) eps L): %.3g (median), %.3g (90%%), %.3g (99%%), "
+           "%.3g (max)\n", ml_q[ml_nq / 2], ml_q[ml_nq * 9 / 10], ml_q[ml_nq * 99 / 100], ml_q[ml_nq - 1]);
 }
 
 /* The sun along the view (nu = 0) over an infinite optical depth: a layer
@@ -908,6 +994,159 @@ static void test_layers_nu0(void)
                  "float layers, nu = 0, infinite depth (pieces %d): L %.9g bound %g", p,
                  (double)Lf.r, (double)Bf.r);
     }
+}
+
+/* A camera 1e4 and 1e8 scale heights (of the denser, 1.2 km layer) below
+ * the Earth-like layers' base, double and float: the density at the camera
+ * is beyond every range (e^1e4, e^1e8), so T = 0 and all the in-scatter
+ * comes from within e^-1e4 of the camera, where the 1.2 km layer outweighs
+ * the 8 km one by e^8500 at least: L = that layer's albedo x light, its
+ * limit (ambient plus the sun through its phase function, or ambient alone
+ * where the sun is dimmed: its column above is infinite), exact.  The bound
+ * must hold and say something: at most its rounding floor, 4 (pieces + 8)
+ * eps L (the most pieces it may take; the sum over them and a few eps each),
+ * plus 4 eps L for the shares taken from the logs (the dominant layer's
+ * weight within e^(2 eps) of its value, the other's below e^-8500 with its
+ * rounding), plus 4 eps L of margin, plus (n + 8) eps |c_R - c_M| (n = 2
+ * layers) for the rounding of the shares compared at the piece's start
+ * (c_k the layers' albedo x light); the shares' variation along the
+ * ray's weight is below e^-8500.  (The logs' rounding, eps times the ray's
+ * height over H, was charged to the whole value: 191 times the value in
+ * float, 3e9 eps in double, where it is right to 2 eps; and with one piece
+ * up to infinity Gruss' bound, blind to the weight e^-tau, was c_max -
+ * c_min: 1e15 eps.) */
+static void test_layers_far_below(void)
+{
+    static const double ys[] = { -1.2e7, -1.2e11 }, wv[] = { 0.8, 0.1, -0.5 };
+    static const double sv[] = { 1e5, INFINITY };
+    static const int pv[] = { 1, 8, 64 };
+    double worst = 0, worst_e = 0;
+    size_t iy, iw, is, ip;
+    int flt, sx, c;
+    for (flt = 0; flt < 2; ++flt)
+        for (sx = 0; sx < 2; ++sx)
+            for (iy = 0; iy < 2; ++iy)
+                for (iw = 0; iw < 3; ++iw)
+                    for (is = 0; is < 2; ++is)
+                        for (ip = 0; ip < 3; ++ip) {
+                            mist_hfog a[2];
+                            double got[3], bnd[3], u, eps = flt ? 0x1p-24 : 0x1p-53;
+                            double w = wv[iw], wx = sqrt((1 - w) * (1 + w)), lx = cos(0.1745), lyv = sin(0.1745);
+                            LD alb, La[3], E, ER;
+                            a[0] = layer(0, 1, 8000, 5.8e-6, 13.5e-6, 33.1e-6, 0, 0, 0, 0.9, 0);
+                            a[1] = layer(0, 1, 1200, 0, 0, 0, 2.2e-5, 2.2e-5, 2.2e-5, 0.9, 0.76);
+                            a[0].sun.r = a[0].sun.g = a[0].sun.b = 10;
+                            a[0].ambient.r = 0.2; a[0].ambient.g = 0.3; a[0].ambient.b = 0.5;
+                            a[0].sun_extinction = sx;
+                            if (!flt) {
+                                mist_vec3 o = { 0, 0, 0 }, d;
+                                mist_rgb T, L, B;
+                                o.y = ys[iy];
+                                d.x = wx; d.y = w; d.z = 0;
+                                a[0].sun_dir.x = lx; a[0].sun_dir.y = lyv; a[0].sun_dir.z = 0;
+                                mist_hfog_layers_eval(a, 2, o, d, sv[is], pv[ip], &T, &L, &B);
+                                got[0] = L.r; got[1] = L.g; got[2] = L.b;
+                                bnd[0] = B.r; bnd[1] = B.g; bnd[2] = B.b;
+                                u = lx * wx + lyv * w;
+                                alb = (LD)a[1].mie_scat.r / a[1].mie_ext.r;
+                                E = (LD)a[0].sun.r * mist_fog_eval(a[1].mie_phase, u);
+                                ER = (LD)a[0].sun.r * mist_rayleigh_eval(u);
+                                mt_check(T.r == 0, "far below: T %g", T.r);
+                            } else {
+                                mist_hfogf f[2];
+                                mist_vec3f o = { 0, 0, 0 }, d;
+                                mist_rgbf T, L, B;
+                                int k;
+                                memset(f, 0, sizeof f);
+                                for (k = 0; k < 2; ++k) {
+                                    f[k].density = 1; f[k].scale_height = (float)a[k].scale_height;
+                                    f[k].rayleigh_scat.r = f[k].rayleigh_ext.r = (float)a[k].rayleigh_ext.r;
+                                    f[k].rayleigh_scat.g = f[k].rayleigh_ext.g = (float)a[k].rayleigh_ext.g;
+                                    f[k].rayleigh_scat.b = f[k].rayleigh_ext.b = (float)a[k].rayleigh_ext.b;
+                                    f[k].mie_ext.r = f[k].mie_ext.g = f[k].mie_ext.b = (float)a[k].mie_ext.r;
+                                    f[k].mie_scat.r = f[k].mie_scat.g = f[k].mie_scat.b = (float)a[k].mie_scat.r;
+                                    f[k].mie_phase = mist_fog_makef(k ? 0.76f : 0, 0, 0, 0);
+                                }
+                                f[0].sun.r = f[0].sun.g = f[0].sun.b = 10;
+                                f[0].ambient.r = 0.2f; f[0].ambient.g = 0.3f; f[0].ambient.b = 0.5f;
+                                f[0].sun_extinction = sx;
+                                f[0].sun_dir.x = (float)lx; f[0].sun_dir.y = (float)lyv; f[0].sun_dir.z = 0;
+                                o.y = (float)ys[iy];
+                                d.x = (float)wx; d.y = (float)w; d.z = 0;
+                                mist_hfog_layers_evalf(f, 2, o, d, (float)sv[is], pv[ip], &T, &L, &B);
+                                got[0] = L.r; got[1] = L.g; got[2] = L.b;
+                                bnd[0] = B.r; bnd[1] = B.g; bnd[2] = B.b;
+                                u = (double)(f[0].sun_dir.x * d.x + f[0].sun_dir.y * d.y);
+                                alb = (LD)f[1].mie_scat.r / f[1].mie_ext.r;
+                                E = (LD)f[0].sun.r * mist_fog_evalf(f[1].mie_phase, (float)u);
+                                ER = (LD)f[0].sun.r * mist_rayleigh_evalf((float)u);
+                                mt_check(T.r == 0, "far below: T %g", (double)T.r);
+                            }
+                            La[0] = flt ? (LD)0.2f : (LD)0.2; La[1] = flt ? (LD)0.3f : (LD)0.3;
+                            La[2] = flt ? (LD)0.5f : (LD)0.5;
+                            for (c = 0; c < 3; ++c) {
+                                LD ref = alb * (La[c] + (sx ? 0 : E)), err = fabsl((LD)got[c] - ref);
+                                LD cR = La[c] + (sx ? 0 : ER);          /* the 8 km layer: albedo 1 */
+                                double floor_ = (4.0 * (pv[ip] + 8) + 8) * eps * (double)ref
+                                              + 10 * eps * (double)fabsl(cR - ref);
+                                if ((double)(err / ref) / eps > worst_e) worst_e = (double)(err / ref) / eps;
+                                if (bnd[c] / ((double)ref * eps) > worst) worst = bnd[c] / ((double)ref * eps);
+                                mt_check(err <= bnd[c] && bnd[c] <= floor_,
+                                         "layers far below, %s%s y=%g w=%g s=%g pieces %d ch %d: "
+                                         "%.17g ref %.17Lg (error %.2Lg eps), bound %.3g eps (at most %.0f)",
+                                         flt ? "float" : "double", sx ? " dimmed" : "", ys[iy], w, sv[is],
+                                         pv[ip], c, got[c], ref, err / ref / eps, bnd[c] / ((double)ref * eps),
+                                         floor_ / ((double)ref * eps));
+                            }
+                        }
+    /* Two layers of one scale height (1 km), bases 0 and 500 m, 1e8 scale
+     * heights below: the shares are constant, 1/(1 + e^0.5) and the rest
+     * (albedos 1 and 0.5, ambient 1: L = f + (1 - f)/2), neither negligible,
+     * and the shares come from the logs, whose rounding is a few eps of
+     * their terms (mist__lrel: 4 eps (3 + 2 |ln st|) here, the height's term
+     * absent for one scale height; it had 2e8 x 4 eps): the bound at most
+     * the floor above plus twice that of L. */
+    for (flt = 0; flt < 2; ++flt)
+        for (iy = 0; iy < 2; ++iy) {
+            static const double yh[] = { -1e7, -1e11 };
+            double eps = flt ? 0x1p-24 : 0x1p-53, got, bnd, floor_;
+            LD f = 1 / (1 + expl(0.5L)), ref = f + (1 - f) / 2, err;
+            if (!flt) {
+                mist_hfog b[2];
+                mist_vec3 o = { 0, 0, 0 }, d = { 0.6, 0.8, 0 };
+                mist_rgb T, L, B;
+                memset(b, 0, sizeof b);
+                b[0] = layer(0, 1, 1000, 0, 0, 0, 1e-3, 0, 0, 1, 0.5);
+                b[1] = layer(500, 1, 1000, 0, 0, 0, 1e-3, 0, 0, 0.5, 0.5);
+                b[0].ambient.r = 1;
+                o.y = yh[iy];
+                mist_hfog_layers_eval(b, 2, o, d, INFINITY, 8, &T, &L, &B);
+                got = L.r; bnd = B.r;
+            } else {
+                mist_hfogf b[2];
+                mist_vec3f o = { 0, 0, 0 }, d = { 0.6f, 0.8f, 0 };
+                mist_rgbf T, L, B;
+                memset(b, 0, sizeof b);
+                for (c = 0; c < 2; ++c) {
+                    b[c].density = 1; b[c].scale_height = 1000; b[c].base = c ? 500.0f : 0.0f;
+                    b[c].mie_ext.r = 1e-3f; b[c].mie_scat.r = c ? 0.5e-3f : 1e-3f;
+                    b[c].mie_phase = mist_fog_makef(0.5f, 0, 0, 0);
+                }
+                b[0].ambient.r = 1;
+                o.y = (float)yh[iy];
+                mist_hfog_layers_evalf(b, 2, o, d, INFINITY, 8, &T, &L, &B);
+                got = L.r; bnd = B.r;
+            }
+            if (flt) ref = f + (1 - f) * ((LD)0.5e-3f / (LD)1e-3f);
+            err = fabsl((LD)got - ref);
+            floor_ = ((4.0 * (8 + 8) + 8) + 2 * 4 * (3 + 2 * fabs(log(1e-3)))) * eps * (double)ref;
+            mt_check(err <= bnd && bnd <= floor_,
+                     "layers far below, one scale height, %s y=%g: %.17g ref %.17Lg (error %.2Lg eps), "
+                     "bound %.3g eps (at most %.0f)", flt ? "float" : "double", yh[iy], got, ref,
+                     err / ref / eps, bnd / ((double)ref * eps), floor_ / ((double)ref * eps));
+        }
+    printf("layers, camera far below: error at most %.2f eps, bound at most %.1f eps of the value\n",
+           worst_e, worst);
 }
 
 /* Float: a scattering layer whose share of the extinction is 1e-40 at the
@@ -1141,6 +1380,59 @@ static void test_segment_long(void)
             }
     }
     printf("long segments: worst %.2f eps (double), %.2f eps (float)\n", worst, worstf);
+}
+
+/* Sources at the range's end on a long step (transmittance underflowed):
+ * +-inf counts as +-the largest finite value S (documented), and the step
+ * is len (s0 W0 + s1 W1) with the weights' series at p = k0 len (as
+ * long_step: p >= 1e20, |q| <= 2p, the neglected terms below 1e-20
+ * relative), in long double, where S len W1 is representable though len W1
+ * (~ len / p^2: 1e-600 at p = 1e300, len 1) is not.  Bar: SEG_BAR eps of
+ * the result (two scaled products and one sum of like-signed terms, or of
+ * a term beyond the other's last bit) plus the smallest normal; a result
+ * beyond the range must be +-inf.  (The infinite source was multiplied
+ * before it was clamped on this branch: NaN or +inf; and S len W1 was 0 for
+ * len W1 below the range: 1e-300 against 1.8e-292.) */
+static void test_segment_inf_source(void)
+{
+    static const double k0s[2][3] = { { 1e300, 1e100, 1e20 }, { 1e30, 1e25, 1e20 } };
+    static const double rs[] = { 1e-300, 1, 2 };            /* k1 / k0 */
+    static const double sv[][2] = { { 1, INFINITY }, { 1, -INFINITY }, { INFINITY, 1 },
+                                    { -INFINITY, 0 }, { INFINITY, -INFINITY }, { DBL_MAX, 1 },
+                                    { 1, DBL_MAX }, { 2, -3 } };
+    size_t a, b, c;
+    int flt;
+    double worst = 0;
+    for (flt = 0; flt < 2; ++flt)
+        for (a = 0; a < 3; ++a)
+            for (b = 0; b < 3; ++b)
+                for (c = 0; c < sizeof sv / sizeof *sv; ++c) {
+                    double len = 1, k0 = k0s[flt][a], k1, got, e;
+                    double big = flt ? FLT_MAX : DBL_MAX, eps = flt ? 0x1p-24 : 0x1p-53;
+                    double tmin = flt ? FLT_MIN : DBL_MIN, s0 = sv[c][0], s1 = sv[c][1];
+                    LD P, ref, S0, S1;
+                    k1 = rs[b] * k0;         /* (float: 1e-300 k0 is 0) */
+                    if (s0 == DBL_MAX) s0 = big;
+                    if (s1 == DBL_MAX) s1 = big;
+                    S0 = s0 > big ? big : (s0 < -big ? -big : s0);
+                    S1 = s1 > big ? big : (s1 < -big ? -big : s1);
+                    if (flt) {
+                        P = (LD)(float)k0 * (float)len;
+                        got = mist_segment_linearf((float)k0, (float)k1, (float)s0, (float)s1,
+                                                   (float)len, (float *)0);
+                    } else {
+                        P = (LD)k0 * len;
+                        got = mist_segment_linear(k0, k1, s0, s1, len, (double *)0);
+                    }
+                    ref = len * (S0 * (1 / P - 1 / (P * P)) + S1 / (P * P));
+                    if (fabsl(ref) > (LD)big) e = got == (ref > 0 ? INFINITY : -INFINITY) ? 0 : INFINITY;
+                    else e = (double)(fabsl((LD)got - ref) / ((LD)eps * fabsl(ref) + (LD)tmin));
+                    if (got != got) e = INFINITY;
+                    if (e > worst) worst = e;
+                    mt_check(e <= SEG_BAR, "segment %s k0=%g k1=%g s=(%g, %g) len=%g: %.17g ref %.17Lg (%.2f eps)",
+                             flt ? "float" : "double", k0, k1, s0, s1, len, got, ref, e);
+                }
+    printf("segment, sources at the range's end: worst %.2f eps\n", worst);
 }
 
 /* The dimmed sun at a subnormal sun height and the column of a fog whose
@@ -1653,9 +1945,11 @@ int main(int argc, char **argv)
     test_ref_exp();
     ref_tol = 4e-18L;
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
-    if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); }
-    if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny(); }
-    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long(); }
+    if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
+    if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny();
+                                          test_layers_far_below(); }
+    if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long();
+                                          test_segment_inf_source(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }
     if (want(argc, argv, "bad")) test_bad();
     if (want(argc, argv, "expm1")) { test_expm1(); test_frexp_ldexp(); }
