@@ -3375,9 +3375,12 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /*   final rounding) + O(eps_W) (xi d(u*)/dxi + |u*|): the bar, 4 ulp(u*) +   */
 /*   4 eps xi d(u*)/dxi, with room (tests/test_tab.c: worst measured below).  */
 /*   Where long double is no wider (MSVC, CUDA device code,                 */
-/*   MIST_NO_LONG_DOUBLE) the double sampler computes in double: the same   */
-/*   forms, monotone, the prefix sums rounded to double (eps x: one of the */
-/*   bar's four).                                                           */
+/*   MIST_NO_LONG_DOUBLE) the double sampler keeps the prefix and x = xi    */
+/*   tot as double-double pairs (the cell chosen as with W: an error there  */
+/*   would jump a zero run) and solves the cell in double, by the same      */
+/*   monotone forms: t within ~3 eps, inside the bar but where u* ~ 0 in a  */
+/*   cell whose density starts at 0 (bar 2 eps t there; a bound of 1.5x,    */
+/*   measured worst 0.88 of the bar: test tab_nold).                        */
 /*   Cost: O(1) expected in n.  Two guide tables of n - 1 buckets: over xi  */
 /*   (bucket j: the cell of x = j tot/(n-1)) and over u, uniform in the     */
 /*   warped v = 1 - sqrt(1 - u) (u >= 0), sqrt(1 + u) - 1 (u < 0), which is */
@@ -3472,7 +3475,10 @@ MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *m
     int err = 0;
     double *m, *f, *F, *q, *kc;
     uint32_t *gx, *gm;
-    MIST__TW s, e, prev, tot;
+    MIST__TW s, e, tot;
+#ifdef MIST__W
+    MIST__TW prev;
+#endif
     if (!t) return MIST_TAB_EINVAL;
     need = MIST__FN(mist__tab_layout)(n, channels, o);
     if (!mu || !p || n < 2 || channels < 1 || channels > 64) err = MIST_TAB_EINVAL;
@@ -3531,22 +3537,36 @@ MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *m
         /* the channels' factors per steradian: 1 / (2 pi I_c) */
         for (c = 0; c < C; ++c)
             kc[c] = (double)((MIST__TW)kc[c] / (MIST__TW)MIST__2PI);
-        /* the CDF's cell prefix, compensated, stored exactly as hi + lo */
-        s = 0; e = 0; prev = 0;
+        /* the CDF's cell prefix, compensated, as a normalised pair hi + lo:
+         * with a wider W, W's sum split (exact); without, the running sum
+         * and its compensation as a double-double */
+        s = 0; e = 0;
         F[0] = 0; F[1] = 0;
         t->klo = G; t->khi = 0;
         for (k = 0; k < G; ++k) {
             MIST__TW mk = ((MIST__TW)m[k + 1] - (MIST__TW)m[k])
-                        * ((MIST__TW)f[k] + (MIST__TW)f[k + 1]) / 2, v;
+                        * ((MIST__TW)f[k] + (MIST__TW)f[k + 1]) / 2;
+            double hi, lo;
             MIST__FN(mist__tab_acc)(&s, &e, mk);
-            v = s + e;
-            if (!(mk > 0) || v < prev) v = prev;      /* zero cells: a plateau */
-            if (v > prev) { if (t->klo == G) t->klo = k; t->khi = k; }
-            F[2 * k + 2] = (double)v;
-            F[2 * k + 3] = (double)(v - (MIST__TW)F[2 * k + 2]);
-            prev = v;
+#ifdef MIST__W
+            prev = s + e;
+            hi = (double)prev;
+            lo = (double)(prev - (MIST__TW)hi);
+#else
+            hi = s + e;
+            lo = e - (hi - s);
+#endif
+            if (!(mk > 0) || hi < F[2 * k] || (hi == F[2 * k] && lo <= F[2 * k + 1])) {
+                hi = F[2 * k];                        /* zero cells: a plateau */
+                lo = F[2 * k + 1];
+            } else {
+                if (t->klo == G) t->klo = k;
+                t->khi = k;
+            }
+            F[2 * k + 2] = hi;
+            F[2 * k + 3] = lo;
         }
-        tot = prev;
+        tot = (MIST__TW)F[2 * G] + (MIST__TW)F[2 * G + 1];
         if (!(tot > 0) || t->klo == G) err = MIST_TAB_EZERO;
         else {
             t->tot[0] = F[2 * G];
@@ -3640,10 +3660,28 @@ MIST__F MIST__T MIST__FN(mist_tab_eval)(const MIST__TAB *t, MIST__T u, MIST__T *
     return MIST__FN(mist__tab_ev)(t, u, channel);
 }
 
-/* F_k in W (hi + lo: exact) */
-MIST__F MIST__TW MIST__FN(mist__tab_F)(const double *F, size_t k)
+/* The sampler's x = xi tot against the prefix F_k (pairs hi + lo).  With a
+ * wider W, x and F_k are W numbers (hi + lo exact in W), xl = 0; without,
+ * x = xh + xl and F_k are double-doubles, compared as pairs, and the
+ * difference x - F_k is taken pairwise (xh - F_hi exact where they are
+ * within a factor 2, Sterbenz). */
+MIST__F int MIST__FN(mist__tab_le)(const double *F, size_t k, MIST__TW xh, MIST__TW xl)
 {
-    return (MIST__TW)F[2 * k] + (MIST__TW)F[2 * k + 1];
+#ifdef MIST__W
+    (void)xl;
+    return (MIST__TW)F[2 * k] + (MIST__TW)F[2 * k + 1] <= xh;
+#else
+    return F[2 * k] < xh || (F[2 * k] == xh && F[2 * k + 1] <= xl);
+#endif
+}
+MIST__F MIST__TW MIST__FN(mist__tab_r)(const double *F, size_t k, MIST__TW xh, MIST__TW xl)
+{
+#ifdef MIST__W
+    (void)xl;
+    return xh - ((MIST__TW)F[2 * k] + (MIST__TW)F[2 * k + 1]);
+#else
+    return (xh - F[2 * k]) + (xl - F[2 * k + 1]);
+#endif
 }
 
 /* mist_tab_sample of a built table, xi in [0, 1] */
@@ -3654,22 +3692,29 @@ MIST__F MIST__T MIST__FN(mist__tab_sm)(const MIST__TAB *t, MIST__T xi)
     const double *F = MIST__FN(mist__tab_d)(t, t->o_F);
     const uint32_t *g = MIST__FN(mist__tab_g)(t, t->o_gx);
     size_t G = t->n - 1, last = t->n - 2, j, lo, hi;
-    MIST__TW tot = (MIST__TW)t->tot[0] + (MIST__TW)t->tot[1];
-    MIST__TW x = (MIST__TW)xi * tot, b, a, r, w, u, ml, mh;
-    if (!(x < tot)) return (MIST__T)m[t->khi + 1];   /* xi = 1: the support's top */
+    MIST__TW x, xl, b, a, r, w, u, ml, mh;
+#ifdef MIST__W
+    x = (MIST__TW)xi * ((MIST__TW)t->tot[0] + (MIST__TW)t->tot[1]);
+    xl = 0;
+#else
+    x = MIST__FN(mist__two_prod)(xi, t->tot[0], &xl);
+    xl += xi * t->tot[1];
+#endif
+    if (MIST__FN(mist__tab_le)(F, G, x, xl))         /* xi = 1: the support's top */
+        return (MIST__T)m[t->khi + 1];
     b = (MIST__TW)xi * (MIST__TW)G;
     j = b < (MIST__TW)G ? (size_t)b : G - 1;
     lo = g[j]; hi = g[j + 1];
-    while (lo > 0 && x < MIST__FN(mist__tab_F)(F, lo)) --lo;
-    while (hi < last && !(x < MIST__FN(mist__tab_F)(F, hi + 1))) ++hi;
+    while (lo > 0 && !MIST__FN(mist__tab_le)(F, lo, x, xl)) --lo;
+    while (hi < last && MIST__FN(mist__tab_le)(F, hi + 1, x, xl)) ++hi;
     while (lo < hi) {
         size_t mid = lo + (hi - lo + 1) / 2;
-        if (MIST__FN(mist__tab_F)(F, mid) <= x) lo = mid; else hi = mid - 1;
+        if (MIST__FN(mist__tab_le)(F, mid, x, xl)) lo = mid; else hi = mid - 1;
     }
     ml = (MIST__TW)m[lo]; mh = (MIST__TW)m[lo + 1];
     a = (MIST__TW)f[lo];
     b = ((MIST__TW)f[lo + 1] - a) / (mh - ml);        /* the density's slope */
-    r = x - MIST__FN(mist__tab_F)(F, lo);
+    r = MIST__FN(mist__tab_r)(F, lo, x, xl);
     if (!(r > 0)) w = 0;
     else if (b >= 0) {
         MIST__TW qa = a / r;

@@ -424,6 +424,16 @@ static void test_exact(const built *b, long nrand)
             xi = b->fl ? (double)nextafterf((float)xi, 2.0f) : nextafter(xi, 2);
         }
     }
+    /* around u = 0, where u = mu_k + t cancels (ulp(u*) -> 0): xi within
+     * relative 1e-3 .. 1e-12 of the CDF at 0 */
+    {
+        double x0 = (double)(pl_cdf(b->mu, f, F, n, 0) / tot);
+        for (j = 0; j < 4000; ++j) {
+            double sc = pow(10.0, -3 - 9 * mt_uniform(&r)), xi = x0 * (1 + sc * (2 * mt_uniform(&r) - 1));
+            if (b->fl) xi = (double)(float)xi;
+            if (xi >= 0 && xi <= 1) CHECK_XI(xi);
+        }
+    }
     /* a long sweep at random places */
     for (j = 0; j < 20; ++j) {
         double xi = mt_uniform(&r);
