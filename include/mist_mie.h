@@ -31,6 +31,12 @@
  *   mist_mie_avg a = mist_mie_average(&d, wl, 3, 1.0, mu, 1800, table);
  *   // a.c_ext, a.c_sca (um^2 per droplet), a.g, table[j] = p(theta_j) /sr
  *
+ *   // Nodes for mist.h's tabulated phase function (mist_tab_init), placed
+ *   // to a requested accuracy (log10 RMS over theta, L1), at most 4096:
+ *   double tmu[4096], tp[4096];
+ *   mist_mie_tabfit f = mist_mie_tab_nodes(&d, wl, 3, 0, 1.0, 0.01, 0.02,
+ *                                          4096, tmu, tp);  // f.n nodes
+ *
  * CONVENTIONS
  *   Bohren & Huffman [BH83]: m = mr + i mi with mi >= 0 (time factor
  *   exp(-i omega t)), xi_n = psi_n - i chi_n, and their amplitudes S1, S2
