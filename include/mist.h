@@ -3378,10 +3378,13 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /*   Where long double is no wider (MSVC, CUDA device code,                 */
 /*   MIST_NO_LONG_DOUBLE) the double sampler keeps the prefix and x = xi    */
 /*   tot as double-double pairs (the cell chosen as with W: an error there  */
-/*   would jump a zero run) and solves the cell in double, by the same      */
-/*   monotone forms: t within ~3 eps, inside the bar but where u* ~ 0 in a  */
-/*   cell whose density starts at 0 (bar 2 eps t there; a bound of 1.5x,    */
-/*   measured worst 0.88 of the bar: test tab_nold).                        */
+/*   would jump a zero run), solves the cell in double by the same forms   */
+/*   (t within ~3 eps: up to 1.5x the bar where u* ~ 0 in a cell whose      */
+/*   density starts at 0, 0.88 measured) and corrects t by one Newton step */
+/*   with a double-double residual (mist__tab_polish): measured worst 0.25  */
+/*   of the bar, monotone in the sweeps (test tab_nold); monotone there by  */
+/*   accuracy (t to ~eps^2, while one ulp of xi moves t by >= eps/2 of t),  */
+/*   not by construction.                                                   */
 /*   Cost: O(1) expected in n.  Two guide tables of n - 1 buckets: over xi  */
 /*   (bucket j: the cell of x = j tot/(n-1)) and over u, uniform in the     */
 /*   warped v = 1 - sqrt(1 - u) (u >= 0), sqrt(1 + u) - 1 (u < 0), which is */
@@ -3690,6 +3693,36 @@ MIST__F MIST__TW MIST__FN(mist__tab_r)(const double *F, size_t k, MIST__TW xh, M
 #endif
 }
 
+#ifndef MIST__W
+/* Without a wider W: the Newton correction dt of the cell's root t (from
+ * the monotone forms, ~3 eps) for a t + (c - a) t^2 / (2h) = R (R = rh +
+ * rl, h = mh - ml), its residual in double-double (h, c - a, t^2 and a t
+ * error-free, the quotient by 2h with its remainder): t - dt within
+ * ~eps^2, and u = ml + t - dt is rounded once by the caller.  Taken only
+ * where it is small (2^-40 t): near a zero of the density, where the
+ * bar's xi term is wide, 0. */
+MIST__F MIST__T MIST__FN(mist__tab_polish)(MIST__T a, MIST__T c, MIST__T ml, MIST__T mh,
+                                           MIST__T rh, MIST__T rl, MIST__T t)
+{
+    MIST__T hl, hh = MIST__FN(mist__two_sum)(mh, -ml, &hl);
+    MIST__T dl, dh = MIST__FN(mist__two_sum)(c, -a, &dl);
+    MIST__T t2l, t2h = MIST__FN(mist__two_prod)(t, t, &t2l);
+    MIST__T ql, qh = MIST__FN(mist__two_prod)(dh, t2h, &ql);
+    MIST__T s2h, s2l, p1l, p1h, e1l, e1, e2l, e2, e, fp, dt;
+    ql += dh * t2l + dl * t2h;
+    s2h = qh / (2 * hh);                                   /* (c - a) t^2 / (2h) */
+    s2l = (MIST__FN(mist__fms)(s2h, 2 * hh, qh) + ql - s2h * (2 * hl)) / (2 * hh);
+    p1h = MIST__FN(mist__two_prod)(a, t, &p1l);            /* a t */
+    e1 = MIST__FN(mist__two_sum)(p1h, s2h, &e1l);
+    e2 = MIST__FN(mist__two_sum)(e1, -rh, &e2l);
+    e = e2 + (((e1l + e2l) + (p1l + s2l)) - rl);           /* the residual */
+    fp = a + dh * (t / hh);                                /* the density at t */
+    if (!(fp > 0)) return MIST__C(0);
+    dt = e / fp;
+    return MIST__FN(mist__abs)(dt) <= MIST__C(0x1p-40) * t ? dt : MIST__C(0);
+}
+#endif
+
 /* mist_tab_sample of a built table, xi in [0, 1] */
 MIST__F MIST__T MIST__FN(mist__tab_sm)(const MIST__TAB *t, MIST__T xi)
 {
@@ -3729,6 +3762,14 @@ MIST__F MIST__T MIST__FN(mist__tab_sm)(const MIST__TAB *t, MIST__T xi)
         MIST__TW d = a * a + 2 * b * r;
         w = 2 * r / (a + MIST__TWM(sqrt)(d > 0 ? d : 0));
     }
+#ifndef MIST__W
+    if (w > 0 && w < mh - ml) {                       /* ml + w - dt, rounded once */
+        MIST__T dt = MIST__FN(mist__tab_polish)(a, f[lo + 1], ml, mh, x - F[2 * lo],
+                                                xl - F[2 * lo + 1], w), el;
+        u = MIST__FN(mist__two_sum)(ml, w, &el);
+        u = u + (el - dt);
+    } else
+#endif
     u = ml + w;
     return (MIST__T)(u < mh ? u : mh);
 }
