@@ -3380,7 +3380,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /*   tot as double-double pairs (the cell chosen as with W: an error there  */
 /*   would jump a zero run), solves the cell in double by the same forms   */
 /*   (t within ~3 eps: up to 1.5x the bar where u* ~ 0 in a cell whose      */
-/*   density starts at 0, 0.88 measured) and corrects t by one Newton step */
+/*   density starts at 0) and corrects t by one Newton step                 */
 /*   with a double-double residual (mist__tab_polish): measured worst 0.25  */
 /*   of the bar, monotone in the sweeps (test tab_nold); monotone there by  */
 /*   accuracy (t to ~eps^2, while one ulp of xi moves t by >= eps/2 of t),  */
