@@ -22,7 +22,8 @@
  * stream of 4096 random inputs, each repetition at least 100 us long (the
  * stream run over k times: MIN_S), with the spread (min..max of the
  * repetitions); a ratio is the median over 15 turns of one repetition of
- * the function and one of its baseline (measure_vs).  Run: ./build/mist_bench  (see README.md). */
+ * the function and one of its baseline (measure_vs).  Run: ./build/mist_bench  (see README.md;
+ * ./build/mist_bench tab: the tabulated phase functions alone). */
 #define _POSIX_C_SOURCE 199309L
 #include "mist.h"
 #include "mist_mie.h"
@@ -1222,7 +1223,113 @@ static void renderer_rows(void)
     row("mist_rayleigh_sample_nf", r_ray_n, "Cycles' scalar loop", r_cy_ray);
 }
 
-int main(void)
+/* Tabulated phase functions (mist_tab_*): float tables of HG .9 at n nodes
+ * uniform in theta, one channel.  Baselines: mist_hg_evalf / _samplef, and
+ * the textbook table sampler, written here: a binary search of xi in the
+ * cells' cumulative sums (double), then the cell's quadratic root by the
+ * usual formula (what mist_tab_samplef's guide table replaces). */
+#define TAB_MAXN 16384
+static mist_tabf *tabs[5];
+static const size_t tab_n[5] = { 64, 256, 1024, 4096, 16384 };
+static double bs_mu[TAB_MAXN], bs_f[TAB_MAXN], bs_F[TAB_MAXN];
+static float tab_mu[5][TAB_MAXN];
+static size_t tab_m[5];              /* the nodes each table has */
+static size_t bs_n;
+static mist_tabf *tab_cur;
+static void tab_make(size_t n, mist_tabf **t, float *mu, size_t *nm)
+{
+    static float p[TAB_MAXN];
+    size_t i, m = 0, bytes;
+    for (i = 0; i < n; ++i) {     /* (nodes that round to the same float: once) */
+        float u = i == 0 ? -1.f : i == n - 1 ? 1.f
+                : (float)-cos(3.14159265358979323846 * (double)i / (double)(n - 1));
+        if (m > 0 && !(u > mu[m - 1])) continue;
+        if (i == n - 1 && m > 0 && mu[m - 1] == 1.f) --m;
+        mu[m] = u;
+        p[m++] = (float)((1 - 0.81) / pow(1.81 - 1.8 * (double)u, 1.5));
+    }
+    n = m;
+    bytes = mist_tab_bytesf(n, 1);
+    *t = (mist_tabf *)malloc(bytes);
+    if (mist_tab_initf(*t, bytes, mu, p, n, 1) != 0) { printf("mist_tab_initf failed\n"); exit(1); }
+    *nm = n;
+}
+static void bs_make(const float *mu, size_t n)
+{
+    size_t i;
+    double tot;
+    for (i = 0; i < n; ++i) {
+        bs_mu[i] = mu[i];
+        bs_f[i] = (1 - 0.81) / pow(1.81 - 1.8 * bs_mu[i], 1.5);
+    }
+    bs_F[0] = 0;
+    for (i = 0; i + 1 < n; ++i)
+        bs_F[i + 1] = bs_F[i] + (bs_mu[i + 1] - bs_mu[i]) * (bs_f[i] + bs_f[i + 1]) / 2;
+    tot = bs_F[n - 1];
+    for (i = 0; i < n; ++i) { bs_F[i] /= tot; bs_f[i] /= tot; }
+    bs_n = n;
+}
+static float bs_sample(float xi)
+{
+    size_t lo = 0, hi = bs_n - 2;
+    double x = xi, a, b, h, r, d;
+    while (lo < hi) {
+        size_t mid = (lo + hi + 1) / 2;
+        if (bs_F[mid] <= x) lo = mid; else hi = mid - 1;
+    }
+    h = bs_mu[lo + 1] - bs_mu[lo];
+    a = bs_f[lo]; b = (bs_f[lo + 1] - a) / h; r = x - bs_F[lo];
+    d = a * a + 2 * b * r;
+    return (float)(bs_mu[lo] + (b == 0 ? r / a : (sqrt(d > 0 ? d : 0) - a) / b));
+}
+static double b_tab_evalf(void)     LOOP(float, mist_tab_evalf(tab_cur, uf[i], NULL))
+static double b_tab_samplef(void)   LOOP(float, mist_tab_samplef(tab_cur, xf[i]))
+static double b_bs_samplef(void)    LOOP(float, bs_sample(xf[i]))
+static double n_tab_evalf(void)
+{
+    mist_tab_eval_nf(tab_cur, uf, out_float, N);
+    return (double)out_float[N / 2];
+}
+static double n_tab_samplef(void)
+{
+    mist_tab_sample_nf(tab_cur, xf, out_float, N);
+    return (double)out_float[N / 2];
+}
+
+static void tab_rows(void)
+{
+    int k;
+    char name[64];
+    for (k = 0; k < 5; ++k) tab_make(tab_n[k], &tabs[k], tab_mu[k], &tab_m[k]);
+    printf("\nTabulated phase functions (float tables of HG .9, n nodes uniform in theta):\n");
+    for (k = 0; k < 5; ++k) {
+        tab_cur = tabs[k];
+        snprintf(name, sizeof name, "mist_tab_evalf (n %zu)", tab_m[k]);
+        row(name, b_tab_evalf, "mist_hg_evalf", b_hg_evalf);
+    }
+    for (k = 0; k < 5; ++k) {
+        tab_cur = tabs[k];
+        bs_make(tab_mu[k], tab_m[k]);
+        snprintf(name, sizeof name, "mist_tab_samplef (n %zu)", tab_m[k]);
+        row(name, b_tab_samplef, "binary search, same n", b_bs_samplef);
+    }
+    bs_make(tab_mu[2], tab_m[2]);
+    row("binary-search sampler (n 1024)", b_bs_samplef, "mist_hg_samplef", b_hg_samplef);
+    for (k = 0; k < 5; ++k) {
+        tab_cur = tabs[k];
+        snprintf(name, sizeof name, "mist_tab_samplef (n %zu)", tab_m[k]);
+        row(name, b_tab_samplef, "binary search, n 1024", b_bs_samplef);
+    }
+    tab_cur = tabs[2];
+    row("mist_tab_eval_nf (n 1024)", n_tab_evalf, "loop of mist_tab_evalf", b_tab_evalf);
+    row("mist_tab_sample_nf (n 1024)", n_tab_samplef, "loop of mist_tab_samplef", b_tab_samplef);
+    printf("bytes per node: %.1f (1 channel), %.1f (3 channels), at n 1024; "
+           "header %zu bytes\n", (double)mist_tab_bytesf(1024, 1) / 1024,
+           (double)mist_tab_bytesf(1024, 3) / 1024, sizeof(mist_tabf));
+    for (k = 0; k < 5; ++k) free(tabs[k]);
+}
+
+int main(int argc, char **argv)
 {
     bench_fn base;
     int i;
@@ -1250,6 +1357,10 @@ int main(void)
     machine();
     printf("ns per call: median of %d repetitions of %d calls [min..max]; "
            "ratio to the baseline named\n\n", REPS, N);
+    if (argc > 1 && strcmp(argv[1], "tab") == 0) {   /* ./mist_bench tab: the tables alone */
+        tab_rows();
+        return 0;
+    }
 
     base = b_hg_eval_printed;
     row("eq. 2 HG eval as printed (float)", b_hg_eval_printed, NULL, NULL);
@@ -1292,6 +1403,7 @@ int main(void)
     alternatives();
     hg_target_rows();
     batch_rows();
+    tab_rows();
     coverage_rows();
     size_rows();
     mie_rows();

@@ -118,8 +118,9 @@
  *   MIST_NO_DIR       the direction samplers (mist_dir_from_cos,
  *                     mist_*_sample_dir); mist_normalize stays.
  *   MIST_NO_BATCH     the array forms (mist_*_eval_n, mist_*_sample_n).
+ *   MIST_NO_TAB       the tabulated phase functions (mist_tab_*).
  *   MIST_ONLY_HG      Henyey-Greenstein alone: all of MIST_NO_DRAINE,
- *                     _RAYLEIGH, _FOG and _HFOG (add MIST_NO_DIR and
+ *                     _RAYLEIGH, _FOG, _HFOG and _TAB (add MIST_NO_DIR and
  *                     MIST_NO_BATCH for the scalar eval and sample only).
  *   Henyey-Greenstein and mist_normalize are always there.  Every
  *   combination compiles (tests/compile/config.c); the heavy Lorenz-Mie
@@ -407,6 +408,9 @@
 #  ifndef MIST_NO_RAYLEIGH
 #    define MIST_NO_RAYLEIGH
 #  endif
+#  ifndef MIST_NO_TAB
+#    define MIST_NO_TAB
+#  endif
 #endif
 #if defined(MIST_NO_DRAINE) && !defined(MIST_NO_FOG)
 #  define MIST_NO_FOG
@@ -487,6 +491,33 @@ typedef struct mist_phasef {
     double hg[3];               /* g_hg, 1 - g_hg, 2 (1 - g_hg)^2 in double: the HG
                                    sampler's terms of g (mist__hg_par) */
 } mist_phasef;
+
+/* A tabulated phase function (see "Tabulated phase functions"): this
+ * header, then its arrays, in the caller's memory (mist_tab_bytes bytes,
+ * aligned as for a double: malloc's).  Built by mist_tab_init; the fields
+ * are internal.  The float and double tables have one layout (their
+ * arrays are double in both), and a built table holds no pointer: it may
+ * be copied byte for byte (to a GPU, to a file). */
+#define MIST__TAB_FIELDS                                                       \
+    uint32_t magic;             /* MIST__TAB_OK built, MIST__TAB_BAD failed */ \
+    int      channels;                                                         \
+    size_t   n;                 /* nodes; n - 1 cells, n - 1 guide buckets */  \
+    size_t   klo, khi;          /* first and last cell of positive mass */     \
+    size_t   o_mu, o_f, o_F, o_q, o_kc, o_gx, o_gm; /* the arrays' byte       \
+                                   offsets from the table's start */            \
+    double   tot[2];            /* the sampling density's integral, hi + lo */ \
+    double   norm;              /* 1 / (2 pi tot) */
+typedef struct mist_tab  { MIST__TAB_FIELDS } mist_tab;
+typedef struct mist_tabf { MIST__TAB_FIELDS } mist_tabf;
+#undef MIST__TAB_FIELDS
+#define MIST__TAB_OK  0x6d746162u   /* the magic of a built table */
+#define MIST__TAB_BAD 0x6d74625fu   /* of one whose mist_tab_init failed */
+/* mist_tab_init's errors (0 is success) */
+#define MIST_TAB_EINVAL (-1)  /* a NULL pointer, n < 2, channels outside [1, 64] */
+#define MIST_TAB_ESIZE  (-2)  /* bytes < mist_tab_bytes(n, channels), or n >= 2^32 */
+#define MIST_TAB_EMU    (-3)  /* mu not strictly increasing from -1 to 1 (NaN too) */
+#define MIST_TAB_EVALUE (-4)  /* a value p NaN, infinite or negative */
+#define MIST_TAB_EZERO  (-5)  /* a channel all zero (or its integral underflows) */
 
 /* A linear RGB triple: radiance, or a coefficient per colour band. */
 typedef struct mist_rgb  { double r, g, b; } mist_rgb;
@@ -3320,6 +3351,500 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 #undef MIST__BLOCKS_FB
 #undef MIST__BLK
 #undef MIST__DRAINE_V
+
+#ifndef MIST_NO_TAB
+/* ======================================================================== */
+/* Tabulated phase functions                                                */
+/* A measured or computed phase function (Lorenz-Mie: mist_mie.h) given at  */
+/* n nodes -1 = mu_0 < mu_1 < ... < mu_{n-1} = 1 with values                */
+/* p[i C + c] >= 0 for C channels (colour bands, wavelengths), any scale.   */
+/*   Interpolant: piecewise LINEAR in mu per channel, normalised in closed  */
+/*   form: q_c(u) = ((mu_{k+1} - u) p_k + (u - mu_k) p_{k+1}) / h_k times  */
+/*   1 / (2 pi I_c), I_c = sum_k h_k (p_k + p_{k+1}) / 2 (h_k = mu_{k+1} -  */
+/*   mu_k; summed compensated in the wide type).  Why linear: it is        */
+/*   positive wherever the data is, cannot ring (a 1e6 : 1 forward peak    */
+/*   stays a peak; a cubic overshoots below 0 next to it), integrates and   */
+/*   inverts exactly; its accuracy is the nodes' placement (mist_mie.h's    */
+/*   builder places them adaptively).  It passes through the nodes: q_c is */
+/*   p times the channel's factor (the data is scaled by a power of 2 per   */
+/*   channel, exactly, then stored in double).  Integral over the sphere:   */
+/*   1 within a few eps (the factor's rounding; tested to 1e-12).           */
+/*   Sampling density: the mean of the normalised channels, s(u) = (1/C)    */
+/*   sum_c q_c(u), again linear per cell with node values f_i (stored in    */
+/*   double, scaled to integrate to tot ~ 1 over mu); mist_tab_eval returns */
+/*   it as f(u) / (2 pi tot), the exact density of mist_tab_sample, and     */
+/*   each q_c(u) in channel[c]: a renderer's weight q_c / s <= C.           */
+/*   Sampling: the CDF's cell prefix F_k = sum_{j<k} h_j (f_j + f_{j+1})/2  */
+/*   in the wide type W (long double for double where it is wider, double   */
+/*   for float), compensated, stored as hi + lo doubles (exact in W),       */
+/*   forced non-decreasing, equal across zero-mass cells.  x = xi tot (W);  */
+/*   the cell is the largest k with F_k <= x (so x < F_{k+1}: never a cell  */
+/*   of zero mass, whatever the zero runs), x >= tot gives the top of the   */
+/*   support.  In the cell, the exact root t of a t + b t^2/2 = r (a = f_k, */
+/*   b = (f_{k+1} - f_k)/h) in one of two forms, each without cancellation */
+/*   where it matters and MONOTONE BY CONSTRUCTION (every operation's       */
+/*   rounding is monotone and each operand moves one way as xi grows):      */
+/*     b >= 0: r = x - F_k, q = a/r,  t = 2 / (q + sqrt(q^2 + 2b/r))        */
+/*     b < 0:  r = x - F_k,           t = 2r / (a + sqrt(max(0, a^2 + 2br)))*/
+/*   then u = mu_k + t in W, clamped to the cell.  The second form cancels  */
+/*   only where the density f(u) = sqrt(a^2 + 2br) -> 0, its error there   */
+/*   ~eps_W x / f(u), which is the bar's xi term (du/dxi = tot/f(u)) times  */
+/*   eps_W/eps; the first is a ratio of positive terms (relative error a    */
+/*   few eps_W in t, and t f(u) <= 2x).  So |u - u*| <= 1/2 ulp(u*) (the   */
+/*   final rounding) + O(eps_W) (xi d(u*)/dxi + |u*|), within the bar       */
+/*   4 ulp(u*) + 4 eps xi d(u*)/dxi: worst measured 0.125 of it (the final  */
+/*   rounding), double and float, eight tables (tests/test_tab.c).          */
+/*   Where long double is no wider (MSVC, CUDA device code,                 */
+/*   MIST_NO_LONG_DOUBLE) the double sampler keeps the prefix and x = xi    */
+/*   tot as double-double pairs (the cell chosen as with W: an error there  */
+/*   would jump a zero run), solves the cell in double by the same forms   */
+/*   (t within ~3 eps: up to 1.5x the bar where u* ~ 0 in a cell whose      */
+/*   density starts at 0) and corrects t by one Newton step                 */
+/*   with a double-double residual (mist__tab_polish): measured worst 0.25  */
+/*   of the bar, monotone in the sweeps (test tab_nold); monotone there by  */
+/*   accuracy (t to ~eps^2, while one ulp of xi moves t by >= eps/2 of t),  */
+/*   not by construction.                                                   */
+/*   Cost: O(1) expected in n.  Two guide tables of n - 1 buckets: over xi  */
+/*   (bucket j: the cell of x = j tot/(n-1)) and over u, uniform in the     */
+/*   warped v = 1 - sqrt(1 - u) (u >= 0), sqrt(1 + u) - 1 (u < 0), which is */
+/*   linear in theta near u = +-1 (nodes dense in theta near the forward    */
+/*   peak spread over buckets); the cell lies between a bucket's entry and  */
+/*   the next one's, found by bisection there.  Expected cells per lookup   */
+/*   for uniform xi: <= 1 + (n-1)/(n-1) = 2; worst case one bucket holding  */
+/*   m cells, log2(m) steps (never more than log2(n)).  Measured            */
+/*   (bench/mist_bench.c, float, HG .9 at n nodes uniform in theta): a      */
+/*   sample 8.2 ns at n = 64, 9.5 at 16382 (a binary search over the same   */
+/*   table: 0.6x at 64, 2.7x at 1024, 6x at 16382 the time), eval 6.2-6.9   */
+/*   ns (3.1-3.5x mist_hg_evalf).                                           */
+/*   Memory: mist_tab_bytes(n, C) = (40 + 8 C) n + 8 C + ~112 bytes.        */
+/* DOMAIN AND BAD INPUT: mist_tab_init checks everything before it writes   */
+/* the arrays and writes nothing past `bytes`; on an error (MIST_TAB_E*,    */
+/* negative) it marks a header that fits in `bytes` as failed.  A table     */
+/* that is NULL or failed is the isotropic phase function (density          */
+/* 1/(4 pi), u = 2 xi - 1; a failed table's channels 1/(4 pi) each); one    */
+/* never built (no magic) likewise, its channel array left alone.  u        */
+/* clamped to [-1, 1], NaN gives density 0 (channels 0); xi clamped to      */
+/* [0, 1], NaN taken as 0.  mist_tab_bytes is 0 (no table) for n < 2, n >=  */
+/* 2^32, channels outside [1, 64], or a size past SIZE_MAX.                 */
+/* Float: mist_tab_initf takes float arrays (converted exactly); the float  */
+/* functions compute in double and round the result once.                   */
+/* ======================================================================== */
+
+#define MIST__TAB MIST__FN(mist_tab)
+#ifdef MIST__W
+#  define MIST__TW     MIST__W
+#  define MIST__TWM(f) MIST__WFN(f)
+#else
+#  define MIST__TW     MIST__T
+#  define MIST__TWM(f) MIST__M(f)
+#endif
+
+/* the table's double array at byte offset off, its guide at off */
+MIST__F const double *MIST__FN(mist__tab_d)(const MIST__TAB *t, size_t off)
+{
+    return (const double *)(const void *)((const char *)t + off);
+}
+MIST__F const uint32_t *MIST__FN(mist__tab_g)(const MIST__TAB *t, size_t off)
+{
+    return (const uint32_t *)(const void *)((const char *)t + off);
+}
+
+/* The layout: o[0..6] = offsets of mu (n), f (n), F (2n: hi, lo), q (n C),
+ * kc (C), gx (n), gm (n), each a multiple of 8; returns the total bytes,
+ * 0 where n < 2, n >= 2^32 (the guides' cell indices are 32-bit), channels
+ * outside [1, 64] or on overflow. */
+MIST__F size_t MIST__FN(mist__tab_layout)(size_t n, int channels, size_t *o)
+{
+    size_t c, at, i, per[7], fix[7];
+    const size_t top = (size_t)-1;
+    if (n < 2 || n > (size_t)0xffffffffu || channels < 1 || channels > 64) return 0;
+    c = (size_t)channels;
+    per[0] = 8; per[1] = 8; per[2] = 16; per[3] = 8 * c; per[4] = 0; per[5] = 4; per[6] = 4;
+    for (i = 0; i < 7; ++i) fix[i] = 0;
+    fix[4] = 8 * c;
+    at = (sizeof(MIST__TAB) + 7u) / 8u * 8u;
+    for (i = 0; i < 7; ++i) {
+        o[i] = at;
+        if (per[i] && n > (top - at - fix[i] - 7u) / per[i]) return 0;
+        at += n * per[i] + fix[i];
+        at = (at + 7u) / 8u * 8u;
+    }
+    return at;
+}
+
+/* Bytes a table of n nodes and `channels` channels needs (0: see above). */
+MIST__F size_t MIST__FN(mist_tab_bytes)(size_t n, int channels)
+{
+    size_t o[7];
+    return MIST__FN(mist__tab_layout)(n, channels, o);
+}
+
+/* 1 where t is a built table */
+MIST__F int MIST__FN(mist__tab_ok)(const MIST__TAB *t)
+{
+    return t && t->magic == MIST__TAB_OK;
+}
+
+/* A compensated running sum in W (Neumaier): *s + *e += y. */
+MIST__F void MIST__FN(mist__tab_acc)(MIST__TW *s, MIST__TW *e, MIST__TW y)
+{
+    MIST__TW z = *s + y;
+    *e += MIST__TWM(fabs)(*s) >= MIST__TWM(fabs)(y) ? (*s - z) + y : (y - z) + *s;
+    *s = z;
+}
+
+/* Builds the table in t's `bytes` bytes from mu[n] and p[n * channels]
+ * (node-major: p[i * channels + c]).  Returns 0, or MIST_TAB_E* (see the
+ * section; nothing written past bytes). */
+MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *mu,
+                                    const MIST__T *p, size_t n, int channels)
+{
+    size_t o[7], need, i, k, c, C, G, last;
+    int err = 0;
+    double *m, *f, *F, *q, *kc;
+    uint32_t *gx, *gm;
+    MIST__TW s, e, tot;
+#ifdef MIST__W
+    MIST__TW prev;
+#endif
+    if (!t) return MIST_TAB_EINVAL;
+    need = MIST__FN(mist__tab_layout)(n, channels, o);
+    if (!mu || !p || n < 2 || channels < 1 || channels > 64) err = MIST_TAB_EINVAL;
+    else if (need == 0 || bytes < need) err = MIST_TAB_ESIZE;
+    else if (!(mu[0] == MIST__C(-1)) || !(mu[n - 1] == MIST__C(1))) err = MIST_TAB_EMU;
+    else {
+        for (i = 0; i + 1 < n && !err; ++i)
+            if (!(mu[i] < mu[i + 1])) err = MIST_TAB_EMU;
+        for (i = 0; i < n * (size_t)channels && !err; ++i)
+            if (!(p[i] >= MIST__C(0) && p[i] <= MIST__BIG)) err = MIST_TAB_EVALUE;
+    }
+    if (err) {
+        if (bytes >= sizeof(MIST__TAB)) {
+            t->magic = MIST__TAB_BAD;
+            t->channels = err == MIST_TAB_EINVAL ? 0 : channels;
+        }
+        return err;
+    }
+    C = (size_t)channels;
+    G = n - 1;
+    last = n - 2;
+    m  = (double *)(void *)((char *)t + o[0]);
+    f  = (double *)(void *)((char *)t + o[1]);
+    F  = (double *)(void *)((char *)t + o[2]);
+    q  = (double *)(void *)((char *)t + o[3]);
+    kc = (double *)(void *)((char *)t + o[4]);
+    gx = (uint32_t *)(void *)((char *)t + o[5]);
+    gm = (uint32_t *)(void *)((char *)t + o[6]);
+    for (i = 0; i < n; ++i) m[i] = (double)mu[i];
+    /* each channel scaled by 2^-e (exact) to a maximum in [1/2, 1), its
+     * integral I over mu (compensated), kc = 1/I for now */
+    for (c = 0; c < C && !err; ++c) {
+        double mx = 0, sc;
+        int ex;
+        for (i = 0; i < n; ++i) mx = (double)p[i * C + c] > mx ? (double)p[i * C + c] : mx;
+        if (!(mx > 0)) { err = MIST_TAB_EZERO; break; }
+        (void)frexp(mx, &ex);
+        sc = ldexp(1.0, -ex);
+        for (i = 0; i < n; ++i) q[i * C + c] = (double)p[i * C + c] * sc;
+        s = 0; e = 0;
+        for (k = 0; k < G; ++k)
+            MIST__FN(mist__tab_acc)(&s, &e, ((MIST__TW)m[k + 1] - (MIST__TW)m[k])
+                                    * ((MIST__TW)q[k * C + c] + (MIST__TW)q[(k + 1) * C + c])
+                                    / 2);
+        s += e;
+        kc[c] = (double)(1 / s);
+        if (!(s > 0) || !(kc[c] < (double)INFINITY)) err = MIST_TAB_EZERO;
+    }
+    if (!err) {
+        /* the sampling density's nodes f_i = (1/C) sum_c q_ic / I_c */
+        for (i = 0; i < n; ++i) {
+            s = 0;
+            for (c = 0; c < C; ++c) s += (MIST__TW)q[i * C + c] * (MIST__TW)kc[c];
+            f[i] = (double)(s / (MIST__TW)C);
+        }
+        /* the channels' factors per steradian: 1 / (2 pi I_c) */
+        for (c = 0; c < C; ++c)
+            kc[c] = (double)((MIST__TW)kc[c] / (MIST__TW)MIST__2PI);
+        /* the CDF's cell prefix, compensated, as a normalised pair hi + lo:
+         * with a wider W, W's sum split (exact); without, the running sum
+         * and its compensation as a double-double */
+        s = 0; e = 0;
+        F[0] = 0; F[1] = 0;
+        t->klo = G; t->khi = 0;
+        for (k = 0; k < G; ++k) {
+            MIST__TW mk = ((MIST__TW)m[k + 1] - (MIST__TW)m[k])
+                        * ((MIST__TW)f[k] + (MIST__TW)f[k + 1]) / 2;
+            double hi, lo;
+            MIST__FN(mist__tab_acc)(&s, &e, mk);
+#ifdef MIST__W
+            prev = s + e;
+            hi = (double)prev;
+            lo = (double)(prev - (MIST__TW)hi);
+#else
+            hi = s + e;
+            lo = e - (hi - s);
+#endif
+            if (!(mk > 0) || hi < F[2 * k] || (hi == F[2 * k] && lo <= F[2 * k + 1])) {
+                hi = F[2 * k];                        /* zero cells: a plateau */
+                lo = F[2 * k + 1];
+            } else {
+                if (t->klo == G) t->klo = k;
+                t->khi = k;
+            }
+            F[2 * k + 2] = hi;
+            F[2 * k + 3] = lo;
+        }
+        tot = (MIST__TW)F[2 * G] + (MIST__TW)F[2 * G + 1];
+        if (!(tot > 0) || t->klo == G) err = MIST_TAB_EZERO;
+        else {
+            t->tot[0] = F[2 * G];
+            t->tot[1] = F[2 * G + 1];
+            t->norm = (double)(1 / ((MIST__TW)MIST__2PI * tot));
+        }
+    }
+    if (err) {
+        t->magic = MIST__TAB_BAD;
+        t->channels = channels;
+        return err;
+    }
+    /* the guide over xi: bucket j's entry, the largest k with F_k <= j tot/G;
+     * over u: the largest k with mu_k <= the start of bucket j in v */
+    for (k = 0, i = 0; i <= G; ++i) {
+        MIST__TW x = tot * (MIST__TW)i / (MIST__TW)G;
+        while (k < last && (MIST__TW)F[2 * k + 2] + (MIST__TW)F[2 * k + 3] <= x) ++k;
+        gx[i] = (uint32_t)k;
+    }
+    for (k = 0, i = 0; i <= G; ++i) {
+        double v = 2 * (double)i / (double)G - 1;
+        double u = v >= 0 ? 1 - (1 - v) * (1 - v) : (1 + v) * (1 + v) - 1;
+        while (k < last && m[k + 1] <= u) ++k;
+        gm[i] = (uint32_t)k;
+    }
+    t->channels = channels;
+    t->n = n;
+    t->o_mu = o[0]; t->o_f = o[1]; t->o_F = o[2]; t->o_q = o[3];
+    t->o_kc = o[4]; t->o_gx = o[5]; t->o_gm = o[6];
+    t->magic = MIST__TAB_OK;
+    return 0;
+}
+
+/* The cell of u in [-1, 1]: the largest k <= n - 2 with mu_k <= u. */
+MIST__F size_t MIST__FN(mist__tab_cell)(const MIST__TAB *t, double u)
+{
+    const double *m = MIST__FN(mist__tab_d)(t, t->o_mu);
+    const uint32_t *g = MIST__FN(mist__tab_g)(t, t->o_gm);
+    size_t G = t->n - 1, last = t->n - 2, j, lo, hi;
+    double v = u >= 0 ? 1 - sqrt(1 - u) : sqrt(1 + u) - 1;
+    double b = (v + 1) * 0.5 * (double)G;
+    j = b < (double)G ? (size_t)b : G - 1;
+    lo = g[j]; hi = g[j + 1];
+    while (lo > 0 && u < m[lo]) --lo;                 /* (rounding of v) */
+    while (hi < last && !(u < m[hi + 1])) ++hi;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo + 1) / 2;
+        if (m[mid] <= u) lo = mid; else hi = mid - 1;
+    }
+    return lo;
+}
+
+/* mist_tab_eval of a built table */
+MIST__F MIST__T MIST__FN(mist__tab_ev)(const MIST__TAB *t, MIST__T u, MIST__T *channel)
+{
+    const double *m = MIST__FN(mist__tab_d)(t, t->o_mu);
+    const double *f = MIST__FN(mist__tab_d)(t, t->o_f);
+    size_t k, c, C = (size_t)t->channels;
+    double x, h, wa, wb;
+    if (!(u == u)) {
+        if (channel) for (c = 0; c < C; ++c) channel[c] = MIST__C(0);
+        return MIST__C(0);
+    }
+    x = (double)MIST__FN(mist__clamp11)(u);
+    k = MIST__FN(mist__tab_cell)(t, x);
+    h = m[k + 1] - m[k];
+    wa = (m[k + 1] - x) / h;                          /* exactly 1, 0 at mu_k */
+    wb = (x - m[k]) / h;
+    if (channel) {
+        const double *q = MIST__FN(mist__tab_d)(t, t->o_q) + k * C;
+        const double *kc = MIST__FN(mist__tab_d)(t, t->o_kc);
+        for (c = 0; c < C; ++c) channel[c] = (MIST__T)((wa * q[c] + wb * q[C + c]) * kc[c]);
+    }
+    return (MIST__T)((wa * f[k] + wb * f[k + 1]) * t->norm);
+}
+
+/* Density per steradian of the sampling density (the mean of the
+ * normalised channels) at u; each channel's into channel[0..C) (channel
+ * may be NULL).  Domain: see the section. */
+MIST__F MIST__T MIST__FN(mist_tab_eval)(const MIST__TAB *t, MIST__T u, MIST__T *channel)
+{
+    if (!MIST__FN(mist__tab_ok)(t)) {
+        MIST__T r = u == u ? MIST__C(MIST__INV4PI) : MIST__C(0);
+        if (channel && t && t->magic == MIST__TAB_BAD && t->channels >= 1
+            && t->channels <= 64) {
+            int c;
+            for (c = 0; c < t->channels; ++c) channel[c] = r;
+        }
+        return r;
+    }
+    return MIST__FN(mist__tab_ev)(t, u, channel);
+}
+
+/* The sampler's x = xi tot against the prefix F_k (pairs hi + lo).  With a
+ * wider W, x and F_k are W numbers (hi + lo exact in W), xl = 0; without,
+ * x = xh + xl and F_k are double-doubles, compared as pairs, and the
+ * difference x - F_k is taken pairwise (xh - F_hi exact where they are
+ * within a factor 2, Sterbenz). */
+MIST__F int MIST__FN(mist__tab_le)(const double *F, size_t k, MIST__TW xh, MIST__TW xl)
+{
+#ifdef MIST__W
+    (void)xl;
+    return (MIST__TW)F[2 * k] + (MIST__TW)F[2 * k + 1] <= xh;
+#else
+    return F[2 * k] < xh || (F[2 * k] == xh && F[2 * k + 1] <= xl);
+#endif
+}
+MIST__F MIST__TW MIST__FN(mist__tab_r)(const double *F, size_t k, MIST__TW xh, MIST__TW xl)
+{
+#ifdef MIST__W
+    (void)xl;
+    return xh - ((MIST__TW)F[2 * k] + (MIST__TW)F[2 * k + 1]);
+#else
+    return (xh - F[2 * k]) + (xl - F[2 * k + 1]);
+#endif
+}
+
+#ifndef MIST__W
+/* Without a wider W: the Newton correction dt of the cell's root t (from
+ * the monotone forms, ~3 eps) for a t + (c - a) t^2 / (2h) = R (R = rh +
+ * rl, h = mh - ml), its residual in double-double (h, c - a, t^2 and a t
+ * error-free, the quotient by 2h with its remainder): t - dt within
+ * ~eps^2, and u = ml + t - dt is rounded once by the caller.  Taken only
+ * where it is small (2^-40 t): near a zero of the density, where the
+ * bar's xi term is wide, 0. */
+MIST__F MIST__T MIST__FN(mist__tab_polish)(MIST__T a, MIST__T c, MIST__T ml, MIST__T mh,
+                                           MIST__T rh, MIST__T rl, MIST__T t)
+{
+    MIST__T hl, hh = MIST__FN(mist__two_sum)(mh, -ml, &hl);
+    MIST__T dl, dh = MIST__FN(mist__two_sum)(c, -a, &dl);
+    MIST__T t2l, t2h = MIST__FN(mist__two_prod)(t, t, &t2l);
+    MIST__T ql, qh = MIST__FN(mist__two_prod)(dh, t2h, &ql);
+    MIST__T s2h, s2l, p1l, p1h, e1l, e1, e2l, e2, e, fp, dt;
+    ql += dh * t2l + dl * t2h;
+    s2h = qh / (2 * hh);                                   /* (c - a) t^2 / (2h) */
+    s2l = (MIST__FN(mist__fms)(s2h, 2 * hh, qh) + ql - s2h * (2 * hl)) / (2 * hh);
+    p1h = MIST__FN(mist__two_prod)(a, t, &p1l);            /* a t */
+    e1 = MIST__FN(mist__two_sum)(p1h, s2h, &e1l);
+    e2 = MIST__FN(mist__two_sum)(e1, -rh, &e2l);
+    e = e2 + (((e1l + e2l) + (p1l + s2l)) - rl);           /* the residual */
+    fp = a + dh * (t / hh);                                /* the density at t */
+    if (!(fp > 0)) return MIST__C(0);
+    dt = e / fp;
+    return MIST__FN(mist__abs)(dt) <= MIST__C(0x1p-40) * t ? dt : MIST__C(0);
+}
+#endif
+
+/* mist_tab_sample of a built table, xi in [0, 1] */
+MIST__F MIST__T MIST__FN(mist__tab_sm)(const MIST__TAB *t, MIST__T xi)
+{
+    const double *m = MIST__FN(mist__tab_d)(t, t->o_mu);
+    const double *f = MIST__FN(mist__tab_d)(t, t->o_f);
+    const double *F = MIST__FN(mist__tab_d)(t, t->o_F);
+    const uint32_t *g = MIST__FN(mist__tab_g)(t, t->o_gx);
+    size_t G = t->n - 1, last = t->n - 2, j, lo, hi;
+    MIST__TW x, xl, b, a, r, w, u, ml, mh;
+#ifdef MIST__W
+    x = (MIST__TW)xi * ((MIST__TW)t->tot[0] + (MIST__TW)t->tot[1]);
+    xl = 0;
+#else
+    x = MIST__FN(mist__two_prod)(xi, t->tot[0], &xl);
+    xl += xi * t->tot[1];
+#endif
+    if (MIST__FN(mist__tab_le)(F, G, x, xl))         /* xi = 1: the support's top */
+        return (MIST__T)m[t->khi + 1];
+    b = (MIST__TW)xi * (MIST__TW)G;
+    j = b < (MIST__TW)G ? (size_t)b : G - 1;
+    lo = g[j]; hi = g[j + 1];
+    while (lo > 0 && !MIST__FN(mist__tab_le)(F, lo, x, xl)) --lo;
+    while (hi < last && MIST__FN(mist__tab_le)(F, hi + 1, x, xl)) ++hi;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo + 1) / 2;
+        if (MIST__FN(mist__tab_le)(F, mid, x, xl)) lo = mid; else hi = mid - 1;
+    }
+    ml = (MIST__TW)m[lo]; mh = (MIST__TW)m[lo + 1];
+    a = (MIST__TW)f[lo];
+    b = ((MIST__TW)f[lo + 1] - a) / (mh - ml);        /* the density's slope */
+    r = MIST__FN(mist__tab_r)(F, lo, x, xl);
+    if (!(r > 0)) w = 0;
+    else if (b >= 0) {
+        MIST__TW qa = a / r;
+        w = 2 / (qa + MIST__TWM(sqrt)(qa * qa + 2 * b / r));
+    } else {
+        MIST__TW d = a * a + 2 * b * r;
+        w = 2 * r / (a + MIST__TWM(sqrt)(d > 0 ? d : 0));
+    }
+#ifndef MIST__W
+    if (w > 0 && w < mh - ml) {                       /* ml + w - dt, rounded once */
+        MIST__T dt = MIST__FN(mist__tab_polish)(a, f[lo + 1], ml, mh, x - F[2 * lo],
+                                                xl - F[2 * lo + 1], w), el;
+        u = MIST__FN(mist__two_sum)(ml, w, &el);
+        u = u + (el - dt);
+    } else
+#endif
+    u = ml + w;
+    return (MIST__T)(u < mh ? u : mh);
+}
+
+/* u = cos theta from xi: the exact inverse CDF of the sampling density
+ * (monotone in xi).  Domain: see the section. */
+MIST__F MIST__T MIST__FN(mist_tab_sample)(const MIST__TAB *t, MIST__T xi)
+{
+    if (!MIST__FN(mist__tab_ok)(t)) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
+    return MIST__FN(mist__tab_sm)(t, MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)));
+}
+
+#ifndef MIST_NO_DIR
+/* Scattered direction around the propagation direction wi and its pdf
+ * (mist_tab_eval at its cosine; pdf may be NULL), as *_sample_dir. */
+MIST__F MIST__V3 MIST__FN(mist_tab_sample_dir)(const MIST__TAB *t, MIST__V3 wi, MIST__T xi1,
+                                                 MIST__T xi2, MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist_tab_sample)(t, xi1);
+    if (pdf) *pdf = MIST__FN(mist_tab_eval)(t, u, MIST__NULL);
+    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+}
+#endif
+
+#ifndef MIST_NO_BATCH
+/* Batch forms: out[i] = mist_tab_eval(t, in[i], NULL), mist_tab_sample(t,
+ * in[i]), bit for bit (the same kernels, the table's check once).  A loop,
+ * not blocks of MIST__BLK: the guide lookups and bisections are gathers
+ * and data-dependent branches, which do not vectorise. */
+MIST__F void MIST__FN(mist_tab_eval_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
+                                       size_t n)
+{
+    size_t i;
+    if (!MIST__FN(mist__tab_ok)(t)) {
+        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_tab_eval)(t, in[i], MIST__NULL);
+        return;
+    }
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__tab_ev)(t, in[i], MIST__NULL);
+}
+
+MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
+                                         size_t n)
+{
+    size_t i;
+    if (!MIST__FN(mist__tab_ok)(t)) {
+        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(MIST__C(0), in[i]);
+        return;
+    }
+    for (i = 0; i < n; ++i)
+        out[i] = MIST__FN(mist__tab_sm)(t, MIST__FN(mist__clamp)(in[i], MIST__C(0), MIST__C(1)));
+}
+#endif /* !MIST_NO_BATCH */
+#undef MIST__TAB
+#undef MIST__TW
+#undef MIST__TWM
+#endif /* !MIST_NO_TAB */
 
 #ifndef MIST_NO_HFOG
 /* ======================================================================== */

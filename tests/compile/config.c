@@ -23,6 +23,9 @@
 #if defined(MIST_NO_HFOG) || defined(EXPECT_NO_FOG) || defined(EXPECT_NO_RAYLEIGH)
 #  define EXPECT_NO_HFOG
 #endif
+#if defined(MIST_NO_TAB) || defined(MIST_ONLY_HG)
+#  define EXPECT_NO_TAB
+#endif
 #if defined(MIST_NO_DIR)
 #  define EXPECT_NO_DIR
 #endif
@@ -117,6 +120,49 @@ static double hfog(double x)
 }
 #endif
 
+/* ---- tabulated phase functions ------------------------------------------ */
+#ifdef EXPECT_NO_TAB
+#  define TAB_NAMES(X) X(mist_tab_bytes) X(mist_tab_init) X(mist_tab_eval)        \
+     X(mist_tab_sample) X(mist_tab_sample_dir) X(mist_tab_eval_n) X(mist_tab_sample_n)
+TAB_NAMES(ABSENT)
+static double tab(double x) { (void)x; return 0 TAB_NAMES(USE); }
+#else
+static double tab(double x)
+{
+    static double mem[64], mu[2] = { -1, 1 }, p[2] = { 1, 2 };
+    static float memf[128], muf[2] = { -1, 1 }, pf[2] = { 1, 2 };
+    mist_tab *t = (mist_tab *)(void *)mem;
+    mist_tabf *tf = (mist_tabf *)(void *)memf;
+    double s = (double)mist_tab_bytes(2, 1) + (double)mist_tab_bytesf(2, 1);
+    float xf = (float)x;
+    s += mist_tab_init(t, sizeof mem, mu, p, 2, 1) + mist_tab_initf(tf, sizeof memf, muf, pf, 2, 1);
+    s += mist_tab_eval(t, x, NULL) + mist_tab_sample(t, x)
+       + (double)(mist_tab_evalf(tf, xf, NULL) + mist_tab_samplef(tf, xf));
+#  ifndef EXPECT_NO_DIR
+    {
+        mist_vec3 wi = { 0, 0, 1 };
+        mist_vec3f wif = { 0, 0, 1 };
+        double pdf = 0;
+        float pdff = 0;
+        s += mist_tab_sample_dir(t, wi, x, x, &pdf).z + pdf
+           + (double)(mist_tab_sample_dirf(tf, wif, xf, xf, &pdff).z + pdff);
+    }
+#  endif
+#  ifndef EXPECT_NO_BATCH
+    {
+        double a[2] = { 0.1, 0.5 };
+        float af[2] = { 0.1f, 0.5f };
+        mist_tab_eval_n(t, a, a, 2);
+        mist_tab_sample_n(t, a, a, 2);
+        mist_tab_eval_nf(tf, af, af, 2);
+        mist_tab_sample_nf(tf, af, af, 2);
+        s += a[0] + (double)af[1];
+    }
+#  endif
+    return s;
+}
+#endif
+
 /* ---- directions ---------------------------------------------------------- */
 #ifdef EXPECT_NO_DIR
 #  define DIR_NAMES(X) X(mist_dir_from_cos) X(mist_hg_sample_dir)
@@ -171,6 +217,6 @@ static double batch(double x)
 int main(void)
 {
     double x = 0.25;
-    double s = always(x) + draine(x) + rayleigh(x) + fog(x) + hfog(x) + dir(x) + batch(x);
+    double s = always(x) + draine(x) + rayleigh(x) + fog(x) + hfog(x) + dir(x) + batch(x) + tab(x);
     return !(s == s);
 }

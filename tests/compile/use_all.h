@@ -66,6 +66,27 @@ MIST_FUNC double use_all(double x)
         s += a[1];
         sf += af[1];
     }
+    {   /* the tabulated phase functions, in a local buffer */
+        double mem[64], mu[2], p[2], ch[1], a[2];
+        float memf[128], muf[2], pf[2], chf[1], af[2];
+        mist_tab *t = (mist_tab *)(void *)mem;
+        mist_tabf *tf = (mist_tabf *)(void *)memf;
+        mu[0] = -1; mu[1] = 1; p[0] = 1; p[1] = x * x;
+        muf[0] = -1; muf[1] = 1; pf[0] = 1; pf[1] = xf * xf;
+        s += (double)mist_tab_bytes(2, 1) + (double)mist_tab_bytesf(2, 1);
+        s += mist_tab_init(t, sizeof mem, mu, p, 2, 1);
+        s += mist_tab_initf(tf, sizeof memf, muf, pf, 2, 1);
+        s += mist_tab_eval(t, x, ch) + ch[0] + mist_tab_sample(t, x);
+        sf += mist_tab_evalf(tf, xf, chf) + chf[0] + mist_tab_samplef(tf, xf);
+        wo = mist_tab_sample_dir(t, wi, x, x, &pdf); s += wo.x + pdf;
+        wof = mist_tab_sample_dirf(tf, wif, xf, xf, &pdff); sf += wof.x + pdff;
+        a[0] = a[1] = x;
+        af[0] = af[1] = xf;
+        mist_tab_eval_n(t, a, a, 2);               mist_tab_eval_nf(tf, af, af, 2);
+        mist_tab_sample_n(t, a, a, 2);             mist_tab_sample_nf(tf, af, af, 2);
+        s += a[1];
+        sf += af[1];
+    }
     {   /* the analytic height fog */
         mist_hfog hf[2];
         mist_hfogf hff[2];
