@@ -22,7 +22,7 @@ for f in "$@"; do
         if grep -q 'main *(' "$blk"; then
             cp "$blk" "$src"
         else
-            { printf '#include "mist.h"\n#include "mist_mie.h"\n#include <stdio.h>\n'
+            { printf '#include "mist.h"\n#include "mist_mie.h"\n#include <stdio.h>\n#include <stdlib.h>\n'
               printf 'int main(void)\n{\n'; cat "$blk"; printf '    return 0;\n}\n'; } > "$src"
         fi
         if "$cc" -std=c99 -Wall -Wextra -Wpedantic -Werror -Wno-unused-variable \
