@@ -1701,7 +1701,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
  * (*out: u where the residual is within its error, else the trusted
  * window's answer), 0 where it does not (*rp, *sp: the residual and the
  * step, *uhp: u - s rounded, *lop, *hip: the window's ends, both *uhp where
- * the model is not trusted), -1 where the residual is NaN. */
+ * the model is not trusted), -1 where the residual is NaN or its scale sc
+ * is not finite (a term overflowed: r = -inf passed the test of r against
+ * sc = +inf; the weights are scaled so that none does: mist__draine_cx). */
 MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
                                                 MIST__T u, MIST__T *out, MIST__T *rp,
                                                 MIST__T *sp, MIST__T *uhp, MIST__T *lop,
@@ -1709,7 +1711,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
 {
     MIST__T ag = MIST__M(fabs)(g), r, sc, fs, v2, iv, iw, s, as, au, wt, k, e, uh, ul, lo, hi;
     MIST__T ew;
-    int tiny, valid;
+    int tiny, valid, bad;
     r = MIST__FN(mist__draine_resc)(g, c0, c1, xi, u, MIST__C(0), &sc, &fs, &v2);
     iv = v2 / fs;                         /* 1 / (S f): with the hi parts, before r */
     s = r * iv;                                           /* (F - xi) / f */
@@ -1728,7 +1730,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
     *rp = r; *sp = s; *uhp = uh;          /*  branches and will not vectorise) */
     *lop = valid ? lo : uh; *hip = valid ? hi : uh;
     tiny |= valid & ((lo == hi) | (e <= MIST__C(3.469446951953614e-18) * sc * iv));  /* 2^-58 */
-    return tiny - 2 * (r != r);
+    bad = (r != r) | !(sc <= MIST__BIG);  /* a term overflowed: no test above holds */
+    return (tiny | bad) - 2 * bad;
 }
 
 /* The root of F_g(u) = xi (sanitised |g| < 1, weights c0, c1 exact and
@@ -2015,6 +2018,24 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__
                                    + t * (m0 + m1 - MIST__C(2) * d)));
 }
 
+/* The prepared samplers' weights in T for the step in T and the compensated
+ * finish: (1, alpha), exact (mist__draine_c's 1/alpha rounds), (0, 1) at
+ * alpha = +inf, and for alpha > MIST__BIG / 2^34 both times 2^-32, still
+ * exact.  The residual and its step are homogeneous in (c0, c1), so the
+ * scale leaves every step and test as it was, but their terms stay finite:
+ * S = V cn (V1 + V) 3 (P + a)^2 reaches ~900 (c0 + c1), and with c1 =
+ * alpha above ~8e306 it overflowed, the residual to -inf and its scale sc
+ * to +inf, which the finish took for a residual within its error (samples
+ * 0.6 off in F; under clang -ffast-math's contraction at every alpha from
+ * 1e307 to DBL_MAX). */
+MIST__F MIST__HOT void MIST__FN(mist__draine_cx)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
+{
+    const MIST__T dn = MIST__C(2.3283064365386963e-10);   /* 2^-32 */
+    int inf = !(alpha < (MIST__T)INFINITY), big = alpha > MIST__BIG * (dn * MIST__C(0.25));
+    *c0 = inf ? MIST__C(0) : big ? dn : MIST__C(1);
+    *c1 = inf ? MIST__C(1) : big ? alpha * dn : alpha;
+}
+
 /* The prepared sampler's first try at sanitised |g| < 1, alpha, c1 != 0, xi
  * in [0, 1]: *st, the start from tab (u at xi = j/K, then the slopes du/dxi
  * / K, then the step bounds): cubic Hermite; returns 1 with the sample in
@@ -2035,20 +2056,21 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
          * is no wider the compensated finish (mist__draine_ddfin), else the
          * wide steps. */
         int ok;
-        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = s0;
+        MIST__T kb, ut, us = s0, cx0, cx1;
+        MIST__FN(mist__draine_cx)(alpha, &cx0, &cx1);
         kb = tab[2 * MIST__PHASE_K + 2 + j];
         if (MIST__DBL) {
             MIST__T et;
-            ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, s0, kb,
-                                             MIST__C(0), &ok, &et);
+            ut = MIST__FN(mist__draine_step)(g, cx0, cx1, xi, s0, kb, MIST__C(0), &ok, &et);
             if (ut >= tab[j] && ut <= tab[j + 1]) us = ut;
         }
 #if defined(MIST__DDR)
-        if (MIST__FN(mist__draine_ddfin)(g, fin, fin > 0 ? alpha : 1, xi, us, u)) return 1;
+        if (MIST__FN(mist__draine_ddfin)(g, cx0, cx1, xi, us, u)) return 1;
 #endif
 #ifdef MIST__W
         {
             MIST__W uw = (MIST__W)us, eb;   /* weights (1, alpha): exact */
+            MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
             int k;
             for (k = 0; k < 2; ++k) {
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
@@ -3268,8 +3290,8 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
          * sampler does from there (mist__draine_ddfin, which repeats that
          * step, else the whole scalar function): the same values bit for
          * bit */
-        MIST__T g = p->g, fin = p->alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
-        MIST__T a = fin > MIST__C(0) ? p->alpha : MIST__C(1), us_[MIST__BLK];
+        MIST__T g = p->g, fin, a, us_[MIST__BLK];
+        MIST__FN(mist__draine_cx)(p->alpha, &fin, &a);     /* the weights, exact */
         MIST__BLOCKS_FB(
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
             MIST__T st; MIST__T ut; MIST__T et; MIST__T r; MIST__T s; MIST__T uh;

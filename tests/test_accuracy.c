@@ -515,6 +515,53 @@ static void test_huge_alpha(void)
         }
 }
 
+/* The prepared double sampler near the top of the type: its step in double
+ * and its compensated finish take the weights (1, alpha), whose residual's
+ * terms (~900 alpha) overflowed above alpha ~8e306; the finish took r =
+ * -inf against its scale +inf for a residual within its error, and
+ * returned its start: F(u) 0.60 for xi 0.44 where fma is one instruction
+ * (gcc -O2 -march=native: 1 to 170 of 25600 (g, xi) per alpha from 7.9e306
+ * to 2.2e307, at |g| < 0.25 and xi near 1/2 or the tails; clang -O3
+ * -march=native -ffast-math: nearly every sample from 1e307 to DBL_MAX).
+ * So alpha from 1e300 to DBL_MAX and +inf, 40 steps a decade from 1e306
+ * up; per alpha 12 g, mostly |g| <= 0.25, and 24 xi, half within 0.1 of
+ * 1/2, each sample, scalar and batch (mist_phase_sample_n), against the
+ * bar.  (The old header failed ~60 of these 34000 points with gcc -O2
+ * -march=native, every point at alpha >= 1e307 with clang -ffast-math.) */
+static void test_top_alpha(void)
+{
+    static const double gs[] = { 0.004, -0.01, 0.025, -0.04, 0.075, -0.1, 0.15, -0.18,
+                                 0.21, -0.25, 0.6, -0.95 };
+    static const double lo[] = { 1e300, 1e302, 1e304, 1e305 };
+    mt_rng rng = { 4242u };
+    double xs[24], us[24];
+    int ia, ig, k, na = 4 + 90 + 3;
+    for (ia = 0; ia < na; ++ia) {
+        double a = ia < 4 ? lo[ia] : ia < 94 ? pow(10, 306 + (ia - 4) / 40.0)
+                 : ia == 94 ? 1.7e308 : ia == 95 ? DBL_MAX : INFINITY;
+        qreal qa = a > DBL_MAX ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
+        if (a > DBL_MAX && ia < 94) a = DBL_MAX;
+        for (ig = 0; ig < (int)(sizeof gs / sizeof *gs); ++ig) {
+            double g = gs[ig];
+            mist_phase p = mist_phase_draine(g, a);
+            for (k = 0; k < 24; ++k)
+                xs[k] = k < 12 ? 0.4 + 0.2 * mt_uniform(&rng) : mt_uniform(&rng);
+            mist_phase_sample_n(&p, xs, us, 24);
+            for (k = 0; k < 24; ++k) {
+                double u = mist_phase_sample(&p, xs[k]), ur;
+                qreal q = ref_sample_stop(g, qa, xs[k], u, ref_bar_rstop(xs[k]));
+                double r = ref_bar_root(g, qa, xs[k], u, 0, q, &ur);
+                double rb = ref_bar_root(g, qa, xs[k], us[k], 0, q, &ur);
+                ++n_points;
+                if (r > worst_d) worst_d = r;
+                mt_check(r <= 1 && rb <= 1, "prepared draine double g=%.17g alpha=%.17g "
+                         "xi=%.17g: u=%.17g, batch %.17g, u*=%.17g (%.2f, %.2f x the bound)",
+                         g, a, xs[k], u, us[k], ur, r, rb);
+            }
+        }
+    }
+}
+
 /* |g| -> 1, alpha >= 1e4 (the stress test at 1e9 calls).  Where the peak is
  * narrower than an ulp of u next to +-1 the CDF jumps across the last
  * rounding boundary b = +-(1 - ulp/2) (float: g = +-0x1.ffea16p-1 puts
@@ -927,6 +974,7 @@ int main(void)
         test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(60, 10) : mt_scale(100, 20)));
     test_huge_alpha();
     test_near_one();
+    test_top_alpha();
     test_random_params((int)mt_scale(1000, 100));
     test_monotone();
     use_prep = 0;
