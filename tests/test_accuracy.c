@@ -562,6 +562,36 @@ static void test_top_alpha(void)
     }
 }
 
+/* Where the double sampler's iteration crawled (bench/mist_worst.c times
+ * it): lobes narrower than an ulp next to +-1 (g = 1 - 2^-51, alpha
+ * 1e-300: 64 steps in double and 64 in long double at one u), the HG u^2
+ * limit near u = 0 (g 1e-300, alpha 1e30, xi just below 1/2: the HG
+ * answer as start, Newton 2/3 of the way a step), the steep side next to
+ * +-1 (g 0.9999 from the table), moderate g at huge alpha.  The solver now
+ * steps there in 1/V or in the weight's integral, starts from the HG u^2
+ * model, and decides +-1 and its neighbour by the residual's signs: each
+ * such sample, unprepared and prepared, double and float, against the
+ * bar. */
+static void test_crawl_points(void)
+{
+    static const double g1[] = { 0x1.fffffffffffcp-1, -(1 - 0x1p-46), 1 - 0x1p-30, 0.9999 };
+    static const double a1[] = { 1e-300, 1e15 };
+    static const double x1[] = { 0x1.99765aeac596bp-1, 0.25, 1e-3 };
+    static const double g2[] = { 0, 1e-300, -1e-20, 1e-4, 0.5, -0.9 };
+    static const double a2[] = { 1e5, 1e30, DBL_MAX, INFINITY };
+    static const double x2[] = { 0x1.fffffffffffffp-2, 0x1.ffffffffffffep-2, 0.5,
+                                 0x1.0000000000001p-1, 0.5 - 1e-9, 0.5 + 1e-9, 0.3, 0.1 };
+    size_t i, j, k;
+    for (i = 0; i < sizeof g1 / sizeof *g1; ++i)
+        for (j = 0; j < sizeof a1 / sizeof *a1; ++j)
+            for (k = 0; k < sizeof x1 / sizeof *x1; ++k)
+                check_point(KIND_DRAINE, g1[i], a1[j], x1[k]);
+    for (i = 0; i < sizeof g2 / sizeof *g2; ++i)
+        for (j = 0; j < sizeof a2 / sizeof *a2; ++j)
+            for (k = 0; k < sizeof x2 / sizeof *x2; ++k)
+                check_point(KIND_DRAINE, g2[i], a2[j], x2[k]);
+}
+
 /* |g| -> 1, alpha >= 1e4 (the stress test at 1e9 calls).  Where the peak is
  * narrower than an ulp of u next to +-1 the CDF jumps across the last
  * rounding boundary b = +-(1 - ulp/2) (float: g = +-0x1.ffea16p-1 puts
@@ -968,6 +998,7 @@ int main(void)
     test_issue2_points();
     test_huge_alpha();
     test_near_one();
+    test_crawl_points();
     /* the prepared phase functions (mist_phase_*): the same bar */
     use_prep = 1;
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
@@ -975,6 +1006,7 @@ int main(void)
     test_huge_alpha();
     test_near_one();
     test_top_alpha();
+    test_crawl_points();
     test_random_params((int)mt_scale(1000, 100));
     test_monotone();
     use_prep = 0;
