@@ -1433,29 +1433,33 @@ MIST__F MIST__T MIST__FN(mist__draine_uy)(MIST__T c0, MIST__T c1, MIST__T y)
 }
 
 /* The next iterate after a Newton step s = (F - x) / f at u (V^2 = v2, V =
- * v) that did not stop, in the variable that suits the step.  Where it
- * moves the HG factor by more than the stops' models allow (12 |g s| >
- * V^2), the step in t = 1/V (dt/du = g/V^3): HG's CDF is linear in 1/V,
- * so with a slowly varying weight this lands near the root, where Newton
- * in u crept next to u = +-1 at |g| -> 1, the tangent's root a factor ~3
- * closer in 1 -+ u a step (g 0.9999, from the table's first interval: 18
- * steps); the new u from V^2 = (1 - |g|)^2 + 2 |g| (1 - sgn(g) u), without
- * cancellation next to the peak.  Else, where it moves the weight w = c0 +
- * c1 u^2 by more than 1/4 (alpha > 1), the step in y (mist__draine_uy;
- * dy/du = w).  Else u - s.  Out of [-1, 1] (2) where t would not be
- * positive: the callers then bisect. */
+ * v) that did not stop, in the variable that suits the step.  The step
+ * moves the HG factor V^-3 by ~3 |g s| / V^2 and the weight w = c0 + c1
+ * u^2 by c1 |s| |2u - s| / w; where the larger exceeds 1/4 (the stops'
+ * models' limit): the weight's (alpha > 1), the step in y (mist__draine_uy;
+ * dy/du = w); the HG factor's, the step in t = 1/V (dt/du = g/V^3): HG's
+ * CDF is linear in 1/V, so with a slowly varying weight this lands near
+ * the root, where Newton in u crept next to u = +-1 at |g| -> 1, the
+ * tangent's root a factor ~3 closer in 1 -+ u a step (g 0.9999, from the
+ * table's first interval: 18 steps); the new u from V^2 = (1 - |g|)^2 +
+ * 2 |g| (1 - sgn(g) u), without cancellation next to the peak.  Else
+ * u - s.  Out of [-1, 1] (2) where t would not be positive: the callers
+ * then bisect.  (The t step first, whatever the weight did, overshot at
+ * g 0.5, alpha 1e4 from u -0.036 to -0.95 for a root at -0.139.) */
 MIST__F MIST__T MIST__FN(mist__draine_next)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T u,
                                             MIST__T s, MIST__T v2, MIST__T v)
 {
     MIST__T ag = MIST__FN(mist__abs)(g), as = MIST__FN(mist__abs)(s), wt = c0 + c1 * u * u;
-    if (MIST__C(12) * ag * as > v2) {
+    MIST__T eh = MIST__C(3) * ag * as * wt, ew = c1 * as * MIST__FN(mist__abs)(MIST__C(2) * u - s)
+                                                 * v2;      /* the changes, times V^2 w */
+    if (c1 > c0 && ew > eh && ew > MIST__C(0.25) * wt * v2)
+        return MIST__FN(mist__draine_uy)(c0, c1, u * (c0 + c1 * u * u / MIST__C(3)) - s * wt);
+    if (eh > MIST__C(0.25) * wt * v2) {
         MIST__T dv = v2 - s * g, vn = v * (v2 / dv), om = MIST__C(1) - ag;
         MIST__T w1 = (vn - om) * (vn + om) / (MIST__C(2) * ag);
         return dv > MIST__C(0) ? (g < MIST__C(0) ? w1 - MIST__C(1) : MIST__C(1) - w1)
                                : MIST__C(2);
     }
-    if (c1 > c0 && c1 * as * MIST__FN(mist__abs)(MIST__C(2) * u - s) > MIST__C(0.25) * wt)
-        return MIST__FN(mist__draine_uy)(c0, c1, u * (c0 + c1 * u * u / MIST__C(3)) - s * wt);
     return u - s;
 }
 
