@@ -12,7 +12,10 @@
  *
  * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
  * and the Dirac limits |g| = 1; alpha from 1e4 to DBL_MAX and +inf with
- * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); and all of it
+ * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); the
+ * prepared double sampler at alpha from 1e300 to DBL_MAX and +inf
+ * (test_top_alpha); the inputs where the solver crept (test_crawl_points);
+ * and all of it
  * again through the prepared phase functions (mist_phase_*).  Mirrors the "exact sampling" sections of
  * include/mist.h. */
 #include "mist.h"
@@ -587,9 +590,26 @@ static void test_crawl_points(void)
             for (k = 0; k < sizeof x1 / sizeof *x1; ++k)
                 check_point(KIND_DRAINE, g1[i], a1[j], x1[k]);
     for (i = 0; i < sizeof g2 / sizeof *g2; ++i)
-        for (j = 0; j < sizeof a2 / sizeof *a2; ++j)
+        for (j = 0; j < sizeof a2 / sizeof *a2; ++j) {
+            int bad = 0, c;
             for (k = 0; k < sizeof x2 / sizeof *x2; ++k)
                 check_point(KIND_DRAINE, g2[i], a2[j], x2[k]);
+            for (c = 0; c < 3; ++c) {          /* monotone: 64 adjacent xi each */
+                double x = c == 0 ? 0.5 : c == 1 ? 0.3 : 0.1, prev = -2;
+                float xf = (float)x, prevf = -2;
+                int m;
+                for (m = 0; m < 32; ++m) { x = nextafter(x, 0); xf = nextafterf(xf, 0); }
+                for (m = 0; m < 64; ++m) {
+                    double u = sample_d(KIND_DRAINE, g2[i], a2[j], x);
+                    float uf = sample_f(KIND_DRAINE, (float)g2[i], (float)a2[j], xf);
+                    bad += (u < prev) + (uf < prevf);
+                    prev = u; prevf = uf;
+                    x = nextafter(x, 1); xf = nextafterf(xf, 1);
+                }
+            }
+            mt_check(bad == 0, "draine g=%g alpha=%g: %d decreases in runs of adjacent xi",
+                     g2[i], a2[j], bad);
+        }
 }
 
 /* |g| -> 1, alpha >= 1e4 (the stress test at 1e9 calls).  Where the peak is
