@@ -1983,6 +1983,17 @@ MIST__F int MIST__FN(mist__phase_tab)(MIST__T g)
     return MIST__FN(mist__abs)(g) <= MIST__C(0.9999);
 }
 
+/* 1 where the table's interval j spans more than half of [-1, 1] (the
+ * first or last one at |g| -> 1, the lobe's far side): its cubic start may
+ * lie across the peak from the root, and the steps from there bisected
+ * towards it (g 0.9999, alpha DBL_MAX, xi 1e-3: 8 compensated steps, 1.5
+ * us without fma).  The double samplers start there as without a table
+ * (eq. 6 or the HG answer: mist__draine_solve). */
+MIST__F MIST__HOT int MIST__FN(mist__phase_wide)(const MIST__T *tab, int j)
+{
+    return tab[j + 1] - tab[j] > MIST__C(1);
+}
+
 /* Where [JD23 eq. 6] in double is a good start (sanitised g, alpha): within
  * 1.3e-5 of the root there (see mist__draine_solve). */
 MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
@@ -2182,6 +2193,7 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
     if (MIST__DBL && !MIST__FN(mist__phase_tab)(g)) { *st = 2; return 0; }   /* no start */
     s0 = MIST__FN(mist__phase_start)(tab, xi, &j);
     *st = (double)s0;
+    if (MIST__DBL && MIST__FN(mist__phase_wide)(tab, j)) { *st = 2; return 0; }
 #if defined(MIST__W) || defined(MIST__DDR)
     {   /* no branch on xi (see mist__draine_step); a second step only from
          * inside [u_j, u_j+1], kb's range.  Double: first one step in T (long
@@ -3436,13 +3448,15 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                                              MIST__C(0), &ok, &et);
             ut = mist__bsel((ut >= tab[k]) & (ut <= tab[k + 1]), ut, st);   /* no branch */
             us_[j_] = ut;
-            f_[j_] = (short)(MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
-                                                                &uh, &lo, &hi) != 1);
+            f_[j_] = (short)((MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
+                                                                 &uh, &lo, &hi) != 1)
+                             | MIST__FN(mist__phase_wide)(tab, k));
             y_[j_] = u;,
             1,
             MIST__T u;                    /* the scalar sampler's finish from there */
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-            out[i_ + j_] = MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
+            out[i_ + j_] = !MIST__FN(mist__phase_wide)(tab, MIST__FN(mist__phase_k)(xi))
+                           && MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
                            : MIST__FN(mist__phase_sample_w)(p, x_[j_]);)
 #endif
         return;
