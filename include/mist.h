@@ -2383,6 +2383,13 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
 {
     MIST__T c0, c1;
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+    if (MIST__DBL && c1 == MIST__C(0))   /* alpha = 0 (NaN, < 0): HG, through
+                             * mist_hg_sample itself (the same sanitising; a copy
+                             * inlined by another route contracted into fma
+                             * differently: an ulp apart under gcc -O3 -march=native
+                             * -ffp-contract=fast; float keeps mist__hg_any, which
+                             * costs fewer registers in CUDA device code) */
+        return MIST__FN(mist_hg_sample)(g, xi);
     return MIST__FN(mist__draine_sample)(MIST__FN(mist__g)(g),
                                          alpha > MIST__C(0) ? alpha : MIST__C(0), c0, c1,
                                          MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)),
