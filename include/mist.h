@@ -1448,10 +1448,71 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* 3.5x; with mist__cbrt 68-69 ns, 3.1-3.2x; with one residual 46-48 ns,    */
 /* 2.2x; with that residual always inlined 42 ns, 2.0x.  In CUDA device     */
 /* code too (H200: 27.7 -> 16.7 ps a sample, docs/history.md).             */
+/* WORST CASE.  Newton in u creeps where F is far from linear over a step: */
+/* next to u = +-1 at |g| -> 1 (the lobe narrower than an ulp: the steps    */
+/* round back to u or overshoot past +-1 and bisect) and near u = 0 at      */
+/* large alpha (density ~u^2: 2/3 of the way a step).  So such steps go in  */
+/* 1/V (HG's CDF is linear in it) or in y = c0 u + c1 u^3 / 3 (the         */
+/* weight's integral; mist__draine_next), small |g| at alpha > 1 starts     */
+/* from F linear in y (mist__draine_uy), and +-1 and its neighbour are      */
+/* decided by the residual's signs.  bench/mist_worst.c: the worst call of  */
+/* an adversarial grid (|g| to 1 - 2^-53, alpha 1e-300 to +inf) 3-8x the   */
+/* median random call in every build measured, gcc 12 and clang 14, with    */
+/* and without long double and fma (was 19-110x).                           */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
 /* ======================================================================== */
+
+/* The Draine CDF as a function of y = c0 u + c1 u^3 / 3 (the weight's
+ * integral): F ~ F(0) + (1 - g^2) y / (2 cn V^3), nearly linear in y where
+ * the HG factor V^-3 varies little, however flat or steep it is in u
+ * (alpha -> inf: the density ~u^2 near u = 0, where Newton in u crept, the
+ * tangent's root 2/3 of the way in a step, and from near 0 overshot).  u
+ * of y (clamped to y(+-1)), c1 > 0: u^3 + 3 p u = 2 q, p = c0/c1 >= 0, q =
+ * 3 y / (2 c1), whose one real root is, by Cardano, t - p/t with t^3 = |q|
+ * + sqrt(q^2 + p^3), written 2 q / (t^2 + p + p^2/t^2) (no cancellation;
+ * q = 0 at t = 0). */
+MIST__F MIST__T MIST__FN(mist__draine_uy)(MIST__T c0, MIST__T c1, MIST__T y)
+{
+    MIST__T p = c0 / c1, ym = c0 + c1 / MIST__C(3), q, aq, t, t2;
+    y = y < -ym ? -ym : y > ym ? ym : y;
+    q = MIST__C(1.5) * y / c1; aq = MIST__FN(mist__abs)(q);
+    t = MIST__M(cbrt)(aq + MIST__M(sqrt)(aq * aq + p * p * p)); t2 = t * t;
+    return t2 > MIST__C(0) ? MIST__C(2) * q / (t2 + p + p * p / t2)
+         : p > MIST__C(0) ? q / (MIST__C(1.5) * p) : MIST__C(0);
+}
+
+/* The next iterate after a Newton step s = (F - x) / f at u (V^2 = v2, V =
+ * v) that did not stop, in the variable that suits the step.  The step
+ * moves the HG factor V^-3 by ~3 |g s| / V^2 and the weight w = c0 + c1
+ * u^2 by c1 |s| |2u - s| / w; where the larger exceeds 1/4 (the stops'
+ * models' limit): the weight's (alpha > 1), the step in y (mist__draine_uy;
+ * dy/du = w); the HG factor's, the step in t = 1/V (dt/du = g/V^3): HG's
+ * CDF is linear in 1/V, so with a slowly varying weight this lands near
+ * the root, where Newton in u crept next to u = +-1 at |g| -> 1, the
+ * tangent's root a factor ~3 closer in 1 -+ u a step (g 0.9999, from the
+ * table's first interval: 18 steps); the new u from V^2 = (1 - |g|)^2 +
+ * 2 |g| (1 - sgn(g) u), without cancellation next to the peak.  Else
+ * u - s.  Out of [-1, 1] (2) where t would not be positive: the callers
+ * then bisect.  (The t step first, whatever the weight did, overshot at
+ * g 0.5, alpha 1e4 from u -0.036 to -0.95 for a root at -0.139.) */
+MIST__F MIST__T MIST__FN(mist__draine_next)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T u,
+                                            MIST__T s, MIST__T v2, MIST__T v)
+{
+    MIST__T ag = MIST__FN(mist__abs)(g), as = MIST__FN(mist__abs)(s), wt = c0 + c1 * u * u;
+    MIST__T eh = MIST__C(3) * ag * as * wt, ew = c1 * as * MIST__FN(mist__abs)(MIST__C(2) * u - s)
+                                                 * v2;      /* the changes, times V^2 w */
+    if (c1 > c0 && ew > eh && ew > MIST__C(0.25) * wt * v2)
+        return MIST__FN(mist__draine_uy)(c0, c1, u * (c0 + c1 * u * u / MIST__C(3)) - s * wt);
+    if (eh > MIST__C(0.25) * wt * v2) {
+        MIST__T dv = v2 - s * g, vn = v * (v2 / dv), om = MIST__C(1) - ag;
+        MIST__T w1 = (vn - om) * (vn + om) / (MIST__C(2) * ag);
+        return dv > MIST__C(0) ? (g < MIST__C(0) ? w1 - MIST__C(1) : MIST__C(1) - w1)
+                               : MIST__C(2);
+    }
+    return u - s;
+}
 
 /* F_g(0) = (1-g)(c0 d0 + c1 (P0 + 3a) a) / (V0 cn (V1 + V0) d0),
  * P0 = V0 V1, d0 = 3 (P0 + a)^2: the u <= 0 form at u = 0. */
@@ -1482,7 +1543,13 @@ MIST__F MIST__T MIST__FN(mist__draine_f0)(MIST__T g, MIST__T c0, MIST__T c1)
  * and f at an iterate there says nothing about f at the root (a stop on
  * the iterate's f alone returned -0.0208 for -0.00366 at g = 0, alpha =
  * 2^20 in float).  All in this pass's type; the callers run it in T to T's
- * noise (tol 16 eps) and then in the wide type (tol eps_T / 64). */
+ * noise (tol 16 eps) and then in the wide type (tol eps_T / 64).
+ * Where the model is not valid the next iterate comes from the step in a
+ * better variable (mist__draine_next: 1/V, or the weight's integral); a
+ * step below half an ulp that does not stop moves to the neighbour, and a
+ * return to the iterate of two steps before (a cycle within the
+ * residual's noise) bisects: linear creeping was the worst case's cost
+ * (bench/mist_worst.c). */
 MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T x,
                                           MIST__T t0, int have0, MIST__T tol, int n,
                                           MIST__T *up)
@@ -1491,8 +1558,8 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
     MIST__T v1 = MIST__C(1) + g, omg = MIST__C(1) - g, a = MIST__C(1) + g * g;
     MIST__T v0 = MIST__M(sqrt)(a), omg2 = omg * v1;
     MIST__T cn = c0 + c1 * (a + g * g) / MIST__C(3);
-    MIST__T ag = g < MIST__C(0) ? -g : g, t0d = MIST__C(1);
-    int it;
+    MIST__T ag = g < MIST__C(0) ? -g : g, t0d = MIST__C(1), u2 = MIST__C(2);
+    int it, valid;
     if (!have0) t0 = MIST__C(0);
     for (it = 0; it < n; ++it) {
         MIST__T v2 = MIST__FN(mist__v2)(g, u), v = MIST__M(sqrt)(v2);
@@ -1522,10 +1589,15 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
         lo = r < MIST__C(0) ? u : lo;
         s  = r * v2 * (MIST__C(1) / (MIST__C(0.5) * omg2 * wt * dd));  /* (F - x) / f;
                                                   the division overlaps r's terms */
-        un = u - s;
+        as = s < MIST__C(0) ? -s : s;
+        w1 = MIST__C(2) * u - s;
+        valid = c1 * as * (w1 < MIST__C(0) ? -w1 : w1) <= MIST__C(0.25) * wt
+                && MIST__C(3) * ag * as <= MIST__C(0.25) * v2;
+        un = valid ? u - s : MIST__FN(mist__draine_next)(g, c0, c1, u, s, v2, v);
         if (!(un >= lo && un <= hi)) {                /* left the bracket: bisect */
             un = MIST__C(0.5) * (lo + hi);
             if (un == lo || un == hi) break;          /* bracket is 1 ulp */
+            u2 = u;
             u = un;
             continue;
         }
@@ -1538,20 +1610,31 @@ MIST__F int MIST__FN(mist__draine_newton)(MIST__T g, MIST__T c0, MIST__T c1, MIS
          * misses its growth over a step away from u = 0 (alpha 250, g
          * 1e-7: 14x the bar).  Multiplied out, with |un| >= |u| - as, so
          * that all but a few operations are done before s is known. */
-        as = s < MIST__C(0) ? -s : s;
         m  = omg2 * MIST__C(1.25) * wt;
         w1 = u < MIST__C(0) ? -u : u;
         tl = tol * (w1 * m + MIST__C(2) * x * v * cn * v2);
         k  = MIST__C(2.7) * ag * wt + MIST__C(2) * c1 * (w1 + as) * v2;   /* K 3/4 v2 wt */
-        w1 = MIST__C(2) * u - s;
-        if (c1 * as * (w1 < MIST__C(0) ? -w1 : w1) <= MIST__C(0.25) * wt
-            && MIST__C(3) * ag * as <= MIST__C(0.25) * v2
+        if (valid
             && (as * m * (MIST__C(1) + tol) <= tl
                 || as * (MIST__C(2) * k * as * m + MIST__C(0.75) * tol * m * v2 * wt)
                    <= MIST__C(0.75) * tl * v2 * wt)) {
             *up = un;
             return 1;
         }
+        if (un == u) {             /* a step below half an ulp that did not stop:
+                                    * the neighbour, else the same step again
+                                    * (next to u = -+1 at |g| -> 1, where the
+                                    * peak is narrower than an ulp, 64 steps at
+                                    * one u, in T and again in W) */
+            un = MIST__M(nextafter)(u, s > MIST__C(0) ? MIST__C(-2) : MIST__C(2));
+            if (!(un > lo && un < hi)) break;   /* the bracket is 1 ulp */
+        } else if (un == u2) {     /* back to where it was two steps ago (a
+                                    * cycle within the residual's noise, near
+                                    * u = 0 at large alpha): bisect */
+            un = MIST__C(0.5) * (lo + hi);
+            if (un == lo || un == hi) break;
+        }
+        u2 = u;
         u = un;
     }
     *up = u;
@@ -1751,7 +1834,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__draine_resc)(MIST__T g, MIST__T c0, MIS
  * (*out: u where the residual is within its error, else the trusted
  * window's answer), 0 where it does not (*rp, *sp: the residual and the
  * step, *uhp: u - s rounded, *lop, *hip: the window's ends, both *uhp where
- * the model is not trusted), -1 where the residual is NaN. */
+ * the model is not trusted), -1 where the residual is NaN or its scale sc
+ * is not finite (a term overflowed: r = -inf passed the test of r against
+ * sc = +inf; the weights are scaled so that none does: mist__draine_cx). */
 MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
                                                 MIST__T u, MIST__T *out, MIST__T *rp,
                                                 MIST__T *sp, MIST__T *uhp, MIST__T *lop,
@@ -1759,7 +1844,7 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
 {
     MIST__T ag = MIST__M(fabs)(g), r, sc, fs, v2, iv, iw, s, as, au, wt, k, e, uh, ul, lo, hi;
     MIST__T ew;
-    int tiny, valid;
+    int tiny, valid, bad;
     r = MIST__FN(mist__draine_resc)(g, c0, c1, xi, u, MIST__C(0), &sc, &fs, &v2);
     iv = v2 / fs;                         /* 1 / (S f): with the hi parts, before r */
     s = r * iv;                                           /* (F - xi) / f */
@@ -1778,7 +1863,8 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
     *rp = r; *sp = s; *uhp = uh;          /*  branches and will not vectorise) */
     *lop = valid ? lo : uh; *hip = valid ? hi : uh;
     tiny |= valid & ((lo == hi) | (e <= MIST__C(3.469446951953614e-18) * sc * iv));  /* 2^-58 */
-    return tiny - 2 * (r != r);
+    bad = (r != r) | !(sc <= MIST__BIG);  /* a term overflowed: no test above holds */
+    return (tiny | bad) - 2 * bad;
 }
 
 /* The root of F_g(u) = xi (sanitised |g| < 1, weights c0, c1 exact and
@@ -1804,11 +1890,12 @@ MIST__F MIST__HOT int MIST__FN(mist__draine_dd1)(MIST__T g, MIST__T c0, MIST__T 
  * fixed point); or e <= eps/8 xi / f (near u = 0 at large alpha, where
  * the bar's xi term is the larger): uw rounded, within the bar and
  * monotone in xi (adjacent xi move the root by >= eps xi / f, 4x the two
- * errors).  Else another step from uh. */
+ * errors).  Else another step, from uh or, where the model does not hold,
+ * from the step in a better variable (mist__draine_next). */
 MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST__T xi,
                                          MIST__T u, MIST__T *out)
 {
-    MIST__T bl = MIST__C(-1), bh = MIST__C(1), r, s, uh, lo, hi;
+    MIST__T bl = MIST__C(-1), bh = MIST__C(1), r, s, uh, ul, lo, hi;
     int it, c;
 #if !defined(MIST__FAST_FMA) && !defined(__CUDA_ARCH__)
     {   /* Dekker's product (mist__two_prod_b) needs bounded factors: the
@@ -1838,6 +1925,11 @@ MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST
                                             &sc, &fs, &v2);
             *out = r > MIST__C(0) ? bl : bh;
             return 1;
+        }
+        {                                 /* the step in the variable that suits it */
+            MIST__T v2 = MIST__FN(mist__v2)(g, u);
+            uh = MIST__FN(mist__draine_next)(g, c0, c1, u, s, v2, MIST__M(sqrt)(v2));
+            uh = uh == u - s ? MIST__FN(mist__two_sum)(u, -s, &ul) : uh;
         }
         if (uh == u)                      /* a step below half an ulp: the neighbour */
             uh = MIST__M(nextafter)(u, s > MIST__C(0) ? MIST__C(-2) : MIST__C(2));
@@ -1931,6 +2023,28 @@ MIST__F MIST__T MIST__FN(mist__draine_round)(MIST__T g, MIST__W c0, MIST__W c1, 
 }
 #endif
 
+/* Where a prepared table's start is used (sanitised g): |g| <= 0.9999.
+ * Beyond, its first and last intervals span nearly [-1, 1], and the steps
+ * from the far side of the root crept: Newton in double stopped at 1 for
+ * 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18), and the
+ * compensated steps took 54 (g = 1 - 2^-46, xi 1e-3); there the HG answer
+ * is the better start (mist__draine_solve). */
+MIST__F int MIST__FN(mist__phase_tab)(MIST__T g)
+{
+    return MIST__FN(mist__abs)(g) <= MIST__C(0.9999);
+}
+
+/* 1 where the table's interval j spans more than half of [-1, 1] (the
+ * first or last one at |g| -> 1, the lobe's far side): its cubic start may
+ * lie across the peak from the root, and the steps from there bisected
+ * towards it (g 0.9999, alpha DBL_MAX, xi 1e-3: 8 compensated steps, 1.5
+ * us without fma).  The double samplers start there as without a table
+ * (eq. 6 or the HG answer: mist__draine_solve). */
+MIST__F MIST__HOT int MIST__FN(mist__phase_wide)(const MIST__T *tab, int j)
+{
+    return tab[j + 1] - tab[j] > MIST__C(1);
+}
+
 /* Where [JD23 eq. 6] in double is a good start (sanitised g, alpha): within
  * 1.3e-5 of the root there (see mist__draine_solve). */
 MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
@@ -1989,19 +2103,33 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
      * table's; else [JD23 eq. 6] in double, which lands within 1.3e-5 of
      * the answer for 1e-3 <= |g| <= 0.9999 and 1e-6 <= alpha <= 1e4
      * (measured; typically within 1e-12); else the HG answer.  Not the
-     * table's for |g| > 0.9999, where the HG answer is the better start:
-     * there the table's first and last intervals span nearly [-1, 1], and
-     * Newton from the far side of the root crept (f(u) >> f(u*)) and stopped
-     * at 1 for 1 - 1.2e-13 (g = 1 - 2^-40, alpha = 1e4, xi = 0x1.0fe683p-18,
-     * double), breaking accuracy and monotonicity. */
-    good = st > -1 && st < 1 && g <= MIST__C(0.9999)
-           && g >= MIST__C(-0.9999);
+     * table's for |g| > 0.9999 (mist__phase_tab). */
+    good = st > -1 && st < 1 && MIST__FN(mist__phase_tab)(g);
     if (!good && MIST__FN(mist__draine_ok6)(g, alpha)) {
         double ud = mist__draine_eq6((double)g, (double)alpha, (double)x);
         good = ud > -1 && ud < 1 ? 2 : 0;
         st = ud;
     }
     if (!good) st = (double)MIST__FN(mist__hg_sample)(g, x);
+    if (MIST__DBL && good != 2 && alpha > MIST__C(1e4) && MIST__FN(mist__abs)(g) < MIST__C(1e-3)) {
+        /* small |g|, alpha > 1e4: F as linear in y (mist__draine_uy) with the
+         * HG factor at u = 0, y = 2 (x - F(0)) cn V0^3 / (1 - g^2), V0^2 =
+         * 1 + g^2: within ~3 |g u| of the root in relative terms, where the
+         * HG answer was far off near u = 0 at large alpha; a start as good
+         * as eq. 6's, so straight to the wide steps (in T, near u = 0 at
+         * large alpha, the steps are within T's noise of xi over f).  Not
+         * in the tails (|u| > 1/2), where the weight varies little and the
+         * HG answer is the better start; nor at alpha <= 1e4, where the
+         * HG answer's steps cost less (g 5e-4, alpha 100: 230 against 290
+         * ns, long double). */
+        MIST__T a = MIST__C(1) + g * g, cn = c0 + c1 * (a + g * g) / MIST__C(3);
+        MIST__T xd = f0 ? (x - f0[0]) - f0[1]   /* x - F(0); F(0) = 1/2 - 3 g (2 c0 +
+                                                   c1) / (8 cn) + O(g^3), odd in g */
+            : (x - MIST__C(0.5)) + MIST__C(3) * g * (MIST__C(2) * c0 + c1) / (MIST__C(8) * cn);
+        MIST__T uc = MIST__FN(mist__draine_uy)(c0, c1, MIST__C(2) * xd * cn
+                         * (a * MIST__M(sqrt)(a)) / ((MIST__C(1) - g) * (MIST__C(1) + g)));
+        if (uc >= MIST__C(-0.5) && uc <= MIST__C(0.5)) { st = (double)uc; good = 2; }
+    }
 #if defined(MIST__DDR)
     /* double where fma is one instruction or long double is no wider: the
      * compensated finish, with the weights (1, alpha), exact, while they
@@ -2037,6 +2165,24 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
     if (MIST__FN(mist__draine_ddfin)(g, c0d, c1d, x, u, &st)) return st;
 #endif
 #ifdef MIST__W
+    if (MIST__FN(mist__abs)(u) >= MIST__C(1) - MIST__C(4) * MIST__EPS) {
+        /* u = +-1 or within two ulps of it, where the lobe may peak
+         * narrower than an ulp of W too: the wide steps then overshot past
+         * +-1 and bisected towards it, a dozen steps (g = 1 - 2^-46).  The
+         * residual's sign at the midpoint m between +-1 and its neighbour
+         * n, else at the one between n and its own, says whether the root
+         * lies beyond it: then +-1, resp. n, is the root correctly rounded,
+         * as mist__draine_round's pick there would decide. */
+        MIST__T sn = u > MIST__C(0) ? MIST__C(1) : MIST__C(-1), n1 = sn * (MIST__C(1) - MIST__EPS);
+        MIST__W m1 = (MIST__W)sn * (1 - (MIST__W)MIST__EPS / 2), m2 = (MIST__W)sn
+                     * (1 - (MIST__W)MIST__EPS * 3 / 2);
+        if ((MIST__W)sn * MIST__WFN(mist__draine_res)((MIST__W)g, c0w, c1w, (MIST__W)x, m1,
+                                                      MIST__NULL, MIST__NULL) < 0)
+            return sn;
+        if (u == n1 && (MIST__W)sn * MIST__WFN(mist__draine_res)((MIST__W)g, c0w, c1w,
+                                           (MIST__W)x, m2, MIST__NULL, MIST__NULL) < 0)
+            return n1;
+    }
     uw = (MIST__W)u;
     MIST__WFN(mist__draine_newton)((MIST__W)g, c0w, c1w, (MIST__W)x, t0w, f0 != MIST__NULL,
                                    (MIST__W)MIST__EPS / 64, MIST__MAXIT, &uw);
@@ -2065,6 +2211,24 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__
                                    + t * (m0 + m1 - MIST__C(2) * d)));
 }
 
+/* The prepared samplers' weights in T for the step in T and the compensated
+ * finish: (1, alpha), exact (mist__draine_c's 1/alpha rounds), (0, 1) at
+ * alpha = +inf, and for alpha > MIST__BIG / 2^34 both times 2^-32, still
+ * exact.  The residual and its step are homogeneous in (c0, c1), so the
+ * scale leaves every step and test as it was, but their terms stay finite:
+ * S = V cn (V1 + V) 3 (P + a)^2 reaches ~900 (c0 + c1), and with c1 =
+ * alpha above ~8e306 it overflowed, the residual to -inf and its scale sc
+ * to +inf, which the finish took for a residual within its error (samples
+ * 0.6 off in F; under clang -ffast-math's contraction at every alpha from
+ * 1e307 to DBL_MAX). */
+MIST__F MIST__HOT void MIST__FN(mist__draine_cx)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
+{
+    const MIST__T dn = MIST__C(2.3283064365386963e-10);   /* 2^-32 */
+    int inf = !(alpha < (MIST__T)INFINITY), big = alpha > MIST__BIG * (dn * MIST__C(0.25));
+    *c0 = inf ? MIST__C(0) : big ? dn : MIST__C(1);
+    *c1 = inf ? MIST__C(1) : big ? alpha * dn : alpha;
+}
+
 /* The prepared sampler's first try at sanitised |g| < 1, alpha, c1 != 0, xi
  * in [0, 1]: *st, the start from tab (u at xi = j/K, then the slopes du/dxi
  * / K, then the step bounds): cubic Hermite; returns 1 with the sample in
@@ -2076,8 +2240,11 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
                                                 MIST__T xi, double *st, MIST__T *u)
 {
     int j;
-    MIST__T s0 = MIST__FN(mist__phase_start)(tab, xi, &j);
+    MIST__T s0;
+    if (MIST__DBL && !MIST__FN(mist__phase_tab)(g)) { *st = 2; return 0; }   /* no start */
+    s0 = MIST__FN(mist__phase_start)(tab, xi, &j);
     *st = (double)s0;
+    if (MIST__DBL && MIST__FN(mist__phase_wide)(tab, j)) { *st = 2; return 0; }
 #if defined(MIST__W) || defined(MIST__DDR)
     {   /* no branch on xi (see mist__draine_step); a second step only from
          * inside [u_j, u_j+1], kb's range.  Double: first one step in T (long
@@ -2085,20 +2252,21 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
          * is no wider the compensated finish (mist__draine_ddfin), else the
          * wide steps. */
         int ok;
-        MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0), kb, ut, us = s0;
+        MIST__T kb, ut, us = s0, cx0, cx1;
+        MIST__FN(mist__draine_cx)(alpha, &cx0, &cx1);
         kb = tab[2 * MIST__PHASE_K + 2 + j];
         if (MIST__DBL) {
             MIST__T et;
-            ut = MIST__FN(mist__draine_step)(g, fin, fin > 0 ? alpha : 1, xi, s0, kb,
-                                             MIST__C(0), &ok, &et);
+            ut = MIST__FN(mist__draine_step)(g, cx0, cx1, xi, s0, kb, MIST__C(0), &ok, &et);
             if (ut >= tab[j] && ut <= tab[j + 1]) us = ut;
         }
 #if defined(MIST__DDR)
-        if (MIST__FN(mist__draine_ddfin)(g, fin, fin > 0 ? alpha : 1, xi, us, u)) return 1;
+        if (MIST__FN(mist__draine_ddfin)(g, cx0, cx1, xi, us, u)) return 1;
 #endif
 #ifdef MIST__W
         {
             MIST__W uw = (MIST__W)us, eb;   /* weights (1, alpha): exact */
+            MIST__T fin = alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
             int k;
             for (k = 0; k < 2; ++k) {
                 uw = MIST__WFN(mist__draine_step)((MIST__W)g, (MIST__W)fin, fin > 0
@@ -2266,6 +2434,13 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
 {
     MIST__T c0, c1;
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
+    if (MIST__DBL && c1 == MIST__C(0))   /* alpha = 0 (NaN, < 0): HG, through
+                             * mist_hg_sample itself (the same sanitising; a copy
+                             * inlined by another route contracted into fma
+                             * differently: an ulp apart under gcc -O3 -march=native
+                             * -ffp-contract=fast; float keeps mist__hg_any, which
+                             * costs fewer registers in CUDA device code) */
+        return MIST__FN(mist_hg_sample)(g, xi);
     return MIST__FN(mist__draine_sample)(MIST__FN(mist__g)(g),
                                          alpha > MIST__C(0) ? alpha : MIST__C(0), c0, c1,
                                          MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)),
@@ -3262,7 +3437,8 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
     }
 #if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
     if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
-        && p->g > MIST__C(-1) && p->g < MIST__C(1)) {
+        && p->g > MIST__C(-1) && p->g < MIST__C(1)
+        && (!MIST__DBL || MIST__FN(mist__phase_tab)(p->g))) {   /* double: table's g */
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1;
         const MIST__T *tab = p->tab;
@@ -3318,8 +3494,8 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
          * sampler does from there (mist__draine_ddfin, which repeats that
          * step, else the whole scalar function): the same values bit for
          * bit */
-        MIST__T g = p->g, fin = p->alpha < (MIST__T)INFINITY ? MIST__C(1) : MIST__C(0);
-        MIST__T a = fin > MIST__C(0) ? p->alpha : MIST__C(1), us_[MIST__BLK];
+        MIST__T g = p->g, fin, a, us_[MIST__BLK];
+        MIST__FN(mist__draine_cx)(p->alpha, &fin, &a);     /* the weights, exact */
         MIST__BLOCKS_FB(
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
             MIST__T st; MIST__T ut; MIST__T et; MIST__T r; MIST__T s; MIST__T uh;
@@ -3330,13 +3506,15 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
                                              MIST__C(0), &ok, &et);
             ut = mist__bsel((ut >= tab[k]) & (ut <= tab[k + 1]), ut, st);   /* no branch */
             us_[j_] = ut;
-            f_[j_] = (short)(MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
-                                                                &uh, &lo, &hi) != 1);
+            f_[j_] = (short)((MIST__FN(mist__draine_dd1)(g, fin, a, xi, ut, &u, &r, &s,
+                                                                 &uh, &lo, &hi) != 1)
+                             | MIST__FN(mist__phase_wide)(tab, k));
             y_[j_] = u;,
             1,
             MIST__T u;                    /* the scalar sampler's finish from there */
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
-            out[i_ + j_] = MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
+            out[i_ + j_] = !MIST__FN(mist__phase_wide)(tab, MIST__FN(mist__phase_k)(xi))
+                           && MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
                            : MIST__FN(mist__phase_sample_w)(p, x_[j_]);)
 #endif
         return;

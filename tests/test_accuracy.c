@@ -12,7 +12,10 @@
  *
  * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
  * and the Dirac limits |g| = 1; alpha from 1e4 to DBL_MAX and +inf with
- * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); and all of it
+ * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); the
+ * prepared double sampler at alpha from 1e300 to DBL_MAX and +inf
+ * (test_top_alpha); the inputs where the solver crept (test_crawl_points);
+ * and all of it
  * again through the prepared phase functions (mist_phase_*).  Mirrors the "exact sampling" sections of
  * include/mist.h. */
 #include "mist.h"
@@ -515,6 +518,100 @@ static void test_huge_alpha(void)
         }
 }
 
+/* The prepared double sampler near the top of the type: its step in double
+ * and its compensated finish take the weights (1, alpha), whose residual's
+ * terms (~900 alpha) overflowed above alpha ~8e306; the finish took r =
+ * -inf against its scale +inf for a residual within its error, and
+ * returned its start: F(u) 0.60 for xi 0.44 where fma is one instruction
+ * (gcc -O2 -march=native: 1 to 170 of 25600 (g, xi) per alpha from 7.9e306
+ * to 2.2e307, at |g| < 0.25 and xi near 1/2 or the tails; clang -O3
+ * -march=native -ffast-math: nearly every sample from 1e307 to DBL_MAX).
+ * So alpha from 1e300 to DBL_MAX and +inf, 40 steps a decade from 1e306
+ * up; per alpha 12 g, mostly |g| <= 0.25, and 24 xi, half within 0.1 of
+ * 1/2, each sample, scalar and batch (mist_phase_sample_n), against the
+ * bar.  (The old header failed ~60 of these 34000 points with gcc -O2
+ * -march=native, every point at alpha >= 1e307 with clang -ffast-math.) */
+static void test_top_alpha(void)
+{
+    static const double gs[] = { 0.004, -0.01, 0.025, -0.04, 0.075, -0.1, 0.15, -0.18,
+                                 0.21, -0.25, 0.6, -0.95 };
+    static const double lo[] = { 1e300, 1e302, 1e304, 1e305 };
+    mt_rng rng = { 4242u };
+    double xs[24], us[24];
+    int ia, ig, k, na = 4 + 90 + 3;
+    for (ia = 0; ia < na; ++ia) {
+        double a = ia < 4 ? lo[ia] : ia < 94 ? pow(10, 306 + (ia - 4) / 40.0)
+                 : ia == 94 ? 1.7e308 : ia == 95 ? DBL_MAX : INFINITY;
+        qreal qa = a > DBL_MAX ? (qreal)1e300 * (qreal)1e300 * (qreal)1e300 : a;
+        if (a > DBL_MAX && ia < 94) a = DBL_MAX;
+        for (ig = 0; ig < (int)(sizeof gs / sizeof *gs); ++ig) {
+            double g = gs[ig];
+            mist_phase p = mist_phase_draine(g, a);
+            for (k = 0; k < 24; ++k)
+                xs[k] = k < 12 ? 0.4 + 0.2 * mt_uniform(&rng) : mt_uniform(&rng);
+            mist_phase_sample_n(&p, xs, us, 24);
+            for (k = 0; k < 24; ++k) {
+                double u = mist_phase_sample(&p, xs[k]), ur;
+                qreal q = ref_sample_stop(g, qa, xs[k], u, ref_bar_rstop(xs[k]));
+                double r = ref_bar_root(g, qa, xs[k], u, 0, q, &ur);
+                double rb = ref_bar_root(g, qa, xs[k], us[k], 0, q, &ur);
+                ++n_points;
+                if (r > worst_d) worst_d = r;
+                mt_check(r <= 1 && rb <= 1, "prepared draine double g=%.17g alpha=%.17g "
+                         "xi=%.17g: u=%.17g, batch %.17g, u*=%.17g (%.2f, %.2f x the bound)",
+                         g, a, xs[k], u, us[k], ur, r, rb);
+            }
+        }
+    }
+}
+
+/* Where the double sampler's iteration crawled (bench/mist_worst.c times
+ * it): lobes narrower than an ulp next to +-1 (g = 1 - 2^-51, alpha
+ * 1e-300: 64 steps in double and 64 in long double at one u), the HG u^2
+ * limit near u = 0 (g 1e-300, alpha 1e30, xi just below 1/2: the HG
+ * answer as start, Newton 2/3 of the way a step), the steep side next to
+ * +-1 (g 0.9999 from the table), moderate g at huge alpha.  The solver now
+ * steps there in 1/V or in the weight's integral, starts from the HG u^2
+ * model, and decides +-1 and its neighbour by the residual's signs: each
+ * such sample, unprepared and prepared, double and float, against the
+ * bar. */
+static void test_crawl_points(void)
+{
+    static const double g1[] = { 0x1.fffffffffffcp-1, -(1 - 0x1p-46), 1 - 0x1p-30, 0.9999 };
+    static const double a1[] = { 1e-300, 1e15 };
+    static const double x1[] = { 0x1.99765aeac596bp-1, 0.25, 1e-3 };
+    static const double g2[] = { 0, 1e-300, -1e-20, 1e-4, 0.5, -0.9 };
+    static const double a2[] = { 1e5, 1e30, DBL_MAX, INFINITY };
+    static const double x2[] = { 0x1.fffffffffffffp-2, 0x1.ffffffffffffep-2, 0.5,
+                                 0x1.0000000000001p-1, 0.5 - 1e-9, 0.5 + 1e-9, 0.3, 0.1 };
+    size_t i, j, k;
+    for (i = 0; i < sizeof g1 / sizeof *g1; ++i)
+        for (j = 0; j < sizeof a1 / sizeof *a1; ++j)
+            for (k = 0; k < sizeof x1 / sizeof *x1; ++k)
+                check_point(KIND_DRAINE, g1[i], a1[j], x1[k]);
+    for (i = 0; i < sizeof g2 / sizeof *g2; ++i)
+        for (j = 0; j < sizeof a2 / sizeof *a2; ++j) {
+            int bad = 0, c;
+            for (k = 0; k < sizeof x2 / sizeof *x2; ++k)
+                check_point(KIND_DRAINE, g2[i], a2[j], x2[k]);
+            for (c = 0; c < 3; ++c) {          /* monotone: 64 adjacent xi each */
+                double x = c == 0 ? 0.5 : c == 1 ? 0.3 : 0.1, prev = -2;
+                float xf = (float)x, prevf = -2;
+                int m;
+                for (m = 0; m < 32; ++m) { x = nextafter(x, 0); xf = nextafterf(xf, 0); }
+                for (m = 0; m < 64; ++m) {
+                    double u = sample_d(KIND_DRAINE, g2[i], a2[j], x);
+                    float uf = sample_f(KIND_DRAINE, (float)g2[i], (float)a2[j], xf);
+                    bad += (u < prev) + (uf < prevf);
+                    prev = u; prevf = uf;
+                    x = nextafter(x, 1); xf = nextafterf(xf, 1);
+                }
+            }
+            mt_check(bad == 0, "draine g=%g alpha=%g: %d decreases in runs of adjacent xi",
+                     g2[i], a2[j], bad);
+        }
+}
+
 /* |g| -> 1, alpha >= 1e4 (the stress test at 1e9 calls).  Where the peak is
  * narrower than an ulp of u next to +-1 the CDF jumps across the last
  * rounding boundary b = +-(1 - ulp/2) (float: g = +-0x1.ffea16p-1 puts
@@ -921,12 +1018,15 @@ int main(void)
     test_issue2_points();
     test_huge_alpha();
     test_near_one();
+    test_crawl_points();
     /* the prepared phase functions (mist_phase_*): the same bar */
     use_prep = 1;
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(60, 10) : mt_scale(100, 20)));
     test_huge_alpha();
     test_near_one();
+    test_top_alpha();
+    test_crawl_points();
     test_random_params((int)mt_scale(1000, 100));
     test_monotone();
     use_prep = 0;
