@@ -2195,9 +2195,18 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
 /* The prepared start at xi in [0, 1]: the table's cubic Hermite
  * interpolant in interval *j (tab: u at xi = j/K, then the slopes
  * du/dxi / K). */
-MIST__F MIST__HOT int MIST__FN(mist__phase_k)(MIST__T xi)     /* xi's table interval */
+/* xi's table interval.  xi is in [+0, 1] here, sanitised by the caller;
+ * the index is still bounded in integers, on xi's bits (NaN's lie above
+ * those of 1), so that no build, fast math without the guard included,
+ * converts a NaN or reads outside the table. */
+MIST__F MIST__HOT int MIST__FN(mist__phase_k)(MIST__T xi)
 {
-    int k = (int)(xi * MIST__PHASE_K);
+    MIST__UB b, one;
+    MIST__T x1 = MIST__C(1);
+    int k;
+    memcpy(&b, &xi, sizeof b);
+    memcpy(&one, &x1, sizeof one);
+    k = b <= one ? (int)(xi * MIST__PHASE_K) : 0;
     return k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
 }
 MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__T xi, int *j)
