@@ -1,6 +1,8 @@
 /* mist.h - phase functions and fog models for renderers.          v0.1.0
  *
- * Header-only C99 (also C++ and CUDA).  No dependencies beyond <math.h>.
+ * Header-only C99, also C++ (98 and later) and CUDA; needs only <math.h>.
+ * MIT license (end of file).  The repository's README.md and docs/ hold the
+ * measurements behind the figures below.
  *
  * USAGE
  *   #include "mist.h"
@@ -14,58 +16,62 @@
  *   mist_vec3 wo = mist_hg_sample_dir(0.8, wi, xi1, xi2, &pdf);
  *
  *   // The Jendersie-d'Eon fog phase function: HG and Draine mixed.
- *   mist_fog fog = mist_fog_make(g_hg, g_d, alpha, w_d);
+ *   mist_fog fog = mist_fog_from_diameter(10.0);     // its fit at d = 10 um
  *   double pf2 = mist_fog_eval(fog, u);
- *   double u2  = mist_fog_sample(fog, xi);           // one xi: lobe, then lobe's u
- *   mist_fog f10 = mist_fog_from_diameter(10.0);     // its fit at d = 10 um
  *
  *   // Per medium, prepare once (also _hg, _cs, _rayleigh, _draine), then
  *   // sample and evaluate through a pointer: same results, less work.
- *   mist_phase ph = mist_phase_fog(f10);
+ *   mist_phase ph = mist_phase_fog(fog);
  *   mist_vec3 wo2 = mist_phase_sample_dir(&ph, wi, xi1, xi2, &pdf);
+ *
+ *   // Height fog along a ray: a background seen through it.
+ *   mist_rgb c = mist_hfog_apply(&hfog, origin, dir, length, background);
+ *
+ * Every public function is listed in plain C, with its parameters' types,
+ * in the section "THE API" below the types.
  *
  * CONVENTIONS
  *   u = cos(theta), theta the angle between the incident and the scattered
  *   PROPAGATION directions: g > 0 scatters forward.  Every *_eval returns the
  *   density per steradian; it integrates to 1 over the sphere.  Every sampler
  *   is exact, so the pdf of a sample is the evaluated density (pbrt / Cycles
- *   convention): *_sample_dir reports it.
+ *   convention): *_sample_dir reports it.  Every scalar sampler but the fog
+ *   mix is the inverse of the CDF P(cos <= u) = xi, monotone in xi, so
+ *   stratified and low-discrepancy sequences keep their structure; the fog
+ *   mix's one xi picks the lobe, then samples it at the rescaled xi.
+ *   Double is the plain name, float carries an 'f' suffix (as in libm).
+ *   Both come from ONE definition of each formula: the header includes
+ *   itself once per type (see "The passes").
  *
- *   Every scalar sampler *_sample(..., xi) except the fog mixture is the
- *   inverse of the CDF  P(cos <= u) = xi,  monotone in xi, so stratified and
- *   low-discrepancy sequences keep their structure.
- *
- *   Double is the plain name, float carries an 'f' suffix (as in libm).  Both
- *   come from ONE definition of each formula: the header includes itself once
- *   per type (see "The passes" below).  The float functions compute in float
- *   and finish the samplers in double; in the type alone they would miss
- *   the accuracy bar by up to 1.7x (measured; each sampler section says
- *   so).  The double HG and Rayleigh samplers compute in double-double,
- *   its products by fma where it is one instruction (FP_FAST_FMA: ARM64,
- *   x86 with -march=haswell or later, CUDA device code), else by Dekker's
- *   splitting (mist__two_prod_b): correctly rounded in practice (but HG
- *   within ~2^-40 of u = 0, where its error is absolute, ~2^-104),
- *   monotone, the same samples in every build that rounds each operation
- *   (one that contracts a*b + c into fma, as gcc -march=native without
- *   -std=c99 does, may change HG's last bits there).  The double Draine and
- *   Cornette-Shanks samplers finish in double-double where fma is one
- *   instruction or long double is no wider (MSVC x64, MIST_NO_LONG_DOUBLE),
- *   else in long double (x86 with gcc or clang, the default build): the
- *   same bar, monotone (test_accuracy; test_accuracy_nold without long
- *   double and fma, test_accuracy_nold_native with fma).  The float
- *   samplers finish in double in every build: the same samples in every
- *   build that rounds each operation (an independent check of 2026-12-01:
- *   gcc -O2, -O3 -march=native, -m32 SSE, g++, -ffast-math, 15.4e6 Draine
- *   and Cornette-Shanks samples); one that contracts a*b + c into fma
- *   (clang -O3 -march=native, by default) may change last bits where the
- *   bar's xi term rules (408 of those, at |g| ~ 1e-3 and large alpha near
- *   xi = 1/2, all within 0.008 of the bar).  Run
- *   in CUDA device code (an NVIDIA H200, nvcc 13.0 -O3 -arch=sm_90;
- *   tests/gpu/; the seventh session of 2026-11-27): every sampler within
- *   that bar (worst 0.249 of it; double Draine at ~2x double's cost), float
- *   samples bit for bit the host's, bad input answered as on the host; with
- *   --use_fast_math too, the fog mixture's float remap of xi then an ulp or
- *   two off (README "On a GPU").
+ * ACCURACY (eps = 2^-53 double, 2^-24 float; worst as the tests print it)
+ *   function                   bar                                  worst
+ *   *_sample, mist_phase_*     |u - u*| <= 4 ulp(u*)                double 0.250,
+ *     (scalar, prepared,         + 4 eps xi du*/dxi, u* the float128  float 0.125
+ *     batch)                     inverse CDF; monotone in xi          of the bar
+ *   mist_hg_sample (double)    correctly rounded in practice        0 of 40000 not
+ *                              (double-double; near u = 0 within      the rounded root
+ *                              half an ulp + 2^-104)
+ *   mist_fog_sample            its lobe's bar at the rescaled xi    0.352, 0.248
+ *   *_eval, mist_phase_eval    a few ulps of the float128 density;  test_quadrature
+ *                              integral 1 within 1e-10
+ *   *_sample_dir, normalize    unit length within 4 eps             1.17, 0.25 eps
+ *   *_eval_n, *_sample_n       bit for bit the scalar function      (see BATCH FORMS)
+ *   mist_hfog_* (one layer)    5 eps (1 + tau)                      3.94, 4.43 eps
+ *   mist_hfog_layers_eval      transmittance as above; in-scatter   error/bound 0.95
+ *                              within the bound it reports
+ *   mist_segment_linear        10 eps                               7.92, 9.13 eps
+ *   mist_tab_sample            the samplers' bar, monotone          0.125 of the bar
+ *   How each sampler gets there: float computes in float and finishes in
+ *   double; double HG and Rayleigh finish in double-double (products by fma
+ *   where it is one instruction, FP_FAST_FMA: ARM64, x86 -march=haswell and
+ *   later, CUDA; else Dekker's splitting), the same samples in every build
+ *   that rounds each operation; double Draine and Cornette-Shanks finish in
+ *   double-double where fma is one instruction or long double is no wider
+ *   (MSVC, ARM64, CUDA, MIST_NO_LONG_DOUBLE), else in x87 long double.  A
+ *   compiler that contracts a*b + c into fma (gcc without -std=c99, clang
+ *   -march=native) may change last bits where the bar's xi term rules,
+ *   within the bar.  Tested in tests/test_accuracy.c, test_quadrature.c,
+ *   test_chi2.c, test_batch.c, test_height_fog.c.
  *
  * DOMAIN AND BAD INPUT (every function; tested in tests/test_domain.c)
  *   g      in [-1, 1]. |g| > 1 is clamped to +-1; NaN is taken as 0.
@@ -84,189 +90,107 @@
  *   w_d    (fog mix weight) in [0, 1]; clamped, NaN taken as 0.
  *   ph     (mist_phase_* functions) built by a mist_phase_* constructor,
  *          which sanitises as above; NULL is the isotropic phase function.
+ *   in, out (batch forms) n elements each; out may equal in, no other
+ *          overlap; n = 0 does nothing (in, out may then be NULL).
+ *   Height fog: see "Analytic height fog".  No function reads or writes
+ *   outside the memory it is given, in any build.
  *
  * CONFIGURATION (define before including)
  *   MIST_FUNC     qualifiers of every function (default: static inline, plus
  *                 __host__ __device__ under nvcc, so kernels can call them).
  *   MIST_ALLOW_FAST_MATH  compile mist with the includer's fast-math flags
  *                 instead of guarding against them (see FAST MATH).
+ *   MIST_ALLOW_EXCESS_PRECISION  build with x87 math (see EXCESS PRECISION).
  *   MIST_NO_LONG_DOUBLE  build the double Draine samplers as where long
  *                 double is no wider (MSVC, ARM Macs, CUDA device code):
- *                 double-double (see above; the tests build it).  The same
- *                 bar; without fma about long double's time unprepared,
- *                 ~1.4x prepared (docs/history.md, "Without a wider long
- *                 double").
+ *                 double-double, the same bar.
  *   MIST_DRAINE_PREPARE_N  (default 1024) from this many elements on, the
  *                 unprepared Draine batch samplers prepare the medium once
- *                 where their eq. 6 kernel does not apply or leaves many
- *                 elements to the scalar function (see BATCH FORMS); 1:
- *                 always, (size_t)-1: never.
- *
+ *                 where their eq. 6 kernel does not apply (see BATCH FORMS);
+ *                 1: always, (size_t)-1: never.
+ *   MIST_HFOG_MAX_LAYERS  (default 8) layers mist_hfog_layers_eval uses.
  *   Leave out what a scene does not need (as stb's STBI_NO_*): each macro
  *   removes whole sections, so they are not even compiled, and the names
  *   are then undeclared.  The types (mist_fog, mist_hfog, ...) always stay.
- *   MIST_NO_DRAINE    Draine and Cornette-Shanks (mist_draine_*, mist_cs_*);
- *                     implies MIST_NO_FOG (the mixture needs Draine).
- *   MIST_NO_RAYLEIGH  Rayleigh (mist_rayleigh_*); implies MIST_NO_HFOG.
- *   MIST_NO_FOG       the fog mixture and droplet fits (mist_fog_make,
- *                     _eval, _sample, _sample_dir, _from_diameter) and the
- *                     prepared phase functions built on the mixture
- *                     (mist_phase_*); implies MIST_NO_HFOG (its Mie phase
- *                     is the mixture).
- *   MIST_NO_HFOG      the analytic height fog (mist_hfog_*,
- *                     mist_segment_linear).
- *   MIST_NO_DIR       the direction samplers (mist_dir_from_cos,
- *                     mist_*_sample_dir); mist_normalize stays.
+ *   MIST_NO_DRAINE    Draine and Cornette-Shanks; implies MIST_NO_FOG.
+ *   MIST_NO_RAYLEIGH  Rayleigh; implies MIST_NO_HFOG.
+ *   MIST_NO_FOG       the fog mix, the droplet fits and the prepared phase
+ *                     functions (mist_phase_*); implies MIST_NO_HFOG.
+ *   MIST_NO_HFOG      the height fog (mist_hfog_*, mist_segment_linear).
+ *   MIST_NO_DIR       the direction samplers; mist_normalize stays.
  *   MIST_NO_BATCH     the array forms (mist_*_eval_n, mist_*_sample_n).
  *   MIST_NO_TAB       the tabulated phase functions (mist_tab_*).
  *   MIST_ONLY_HG      Henyey-Greenstein alone: all of MIST_NO_DRAINE,
- *                     _RAYLEIGH, _FOG, _HFOG and _TAB (add MIST_NO_DIR and
- *                     MIST_NO_BATCH for the scalar eval and sample only).
- *   Henyey-Greenstein and mist_normalize are always there.  Every
- *   combination compiles (tests/compile/config.c); the heavy Lorenz-Mie
- *   solver is opt-in anyway: a separate header, mist_mie.h.
+ *                     _RAYLEIGH, _FOG, _HFOG and _TAB.
+ *   Every combination compiles (tests/compile/config.c).  The Lorenz-Mie
+ *   solver is a separate header, mist_mie.h.
  *
- * BATCH FORMS (arrays; tested in tests/test_batch.c)
- *   mist_hg_eval_n(g, const u[], out[], n)   and every other model's
- *   _eval_n and _sample_n (float: the same name + 'f', mist_hg_eval_nf):
- *   out[i] is exactly what the scalar function returns for in[i] (same
- *   domain, same bad-input results; bit for bit, except that a compiler
- *   allowed to contract a*b+c into one fma, e.g. gcc -march=native without
- *   -std=c99 (-ffp-contract=fast), may fuse differently in the two copies:
- *   then within a few ulps, up to 9 measured; the prepared Draine and
- *   Cornette-Shanks samplers within their bar of each other, which is
- *   wider than that where one ulp of xi moves u by many ulps of u: 5 of
- *   7.5e6 random float samples differed, the most by 1000 ulps at u =
- *   -2.3e-4, g 1.6e-8, alpha 3457, where one ulp of xi moves u by 7e-5).
- *   out may equal in (in place); other
- *   overlaps are not allowed.  n = 0 does nothing (in, out may be NULL).
- *   They work on blocks of 32 with branch-free bodies, so that gcc and
- *   clang vectorise them at -O2 and -O3.  Bodies with a square root (the
- *   evals of HG and Draine) vectorise only where sqrt need not set errno
- *   (-fno-math-errno, implied by -ffast-math; the default on macOS).  The
- *   float HG and Rayleigh samplers (one straight-line form in double) are
- *   vectorised, and so are the double ones (double-double): Rayleigh
- *   everywhere, HG where fma is one instruction (FP_FAST_FMA; else a plain
- *   loop, which was faster).  The unprepared Draine samplers, for media in
- *   the domain of [JD23] eq. 6 (1e-3 <= |g| <= 0.9999, 1e-6 <= alpha <=
- *   1e4; in float |g| up to 0.999999, and alpha up to 1e30 where |g| >=
- *   0.5: mist__draine_okt) where sqrt vectorises (no errno), in float,
- *   and in double where fma is one instruction, run the scalar sampler's
- *   first try over a block (eq. 6 in double, then its certificate or one
- *   compensated Newton step), without preparing; the few elements it
- *   leaves take the scalar function.  From MIST_DRAINE_PREPARE_N elements
- *   on it is taken only
- *   where it leaves few (|g| >= 0.01 and alpha <= 300, or |g| >= 0.5:
- *   mist__draine_vn).  Elsewhere they are a loop below
- *   MIST_DRAINE_PREPARE_N (1024) elements; from there on they prepare the
- *   medium once and return the prepared sampler's values (the one
- *   exception to "bit for bit": the same bar, monotone in xi, but the
- *   last bit may differ from mist_draine_sample's for ~1e-4 of xi in
- *   float, ~1e-3 in double).
- *   Prepared: mist_phase_eval_n(&ph, u[], out[], n) and
- *   mist_phase_sample_n (float: _nf) equal mist_phase_eval and
- *   mist_phase_sample element by element; the Draine and Cornette-Shanks
- *   samples are vectorised in float (the start table and one straight-line
- *   Newton step a block; at |g| >= 0.999 the unprepared kernel) and in
- *   double where fma is one instruction (the table, one step in double and
- *   one in double-double); the few elements
- *   that need more go through the scalar function.  Measured, each against
- *   a loop of scalar calls: bench/mist_bench.c (README "Batch forms").
+ * BATCH FORMS (tests/test_batch.c)
+ *   out[i] is what the scalar function returns for in[i], bit for bit: the
+ *   same domain and bad-input results.  Two exceptions: a compiler allowed
+ *   to contract a*b+c into fma may fuse the two copies differently (then a
+ *   few ulps apart; the Draine samplers within their bar of each other);
+ *   and from MIST_DRAINE_PREPARE_N elements on, outside their eq. 6 kernel's
+ *   domain, the unprepared Draine batch samplers prepare the medium and
+ *   return the prepared sampler's values (the same bar, monotone; the last
+ *   bit differs from mist_draine_sample's for ~1e-4 of xi in float, ~1e-3
+ *   in double).  They work on blocks of 32 with branch-free bodies, which
+ *   gcc and clang vectorise at -O2 and -O3; square roots vectorise only
+ *   without errno (-fno-math-errno, implied by -ffast-math).
  *
- * FAST MATH (-ffast-math and its parts; measured with gcc 12 and clang 14)
- *   Compiled with the includer's -ffast-math, mist breaks: gcc's
- *   -ffinite-math-only deletes the NaN tests of the bad-input handling (NaN
- *   g, u, xi and directions come out NaN or wrong; tests/test_domain.c and
- *   test_mie.c crash), and clang's reassociation undoes the stable forms
- *   (mist_hg_evalf(1 - 2^-24, 1) and mist_normalize of components >= 2^1022
- *   are NaN).  So when the translation unit has fast-math flags (any of
- *   __FAST_MATH__, __FINITE_MATH_ONLY__, __ASSOCIATIVE_MATH__,
- *   __RECIPROCAL_MATH__), mist compiles its own functions with precise
- *   floating point and gives the includer's flags back after them:
- *   gcc    #pragma GCC optimize("no-fast-math", ..., "fp-contract=off"):
- *          the documented results hold; the whole test suite passes under
- *          -O2 -ffast-math (variant_fastmath, tests/robustness.cmake).
- *          With -march=native added, one bit-for-bit comparison of two
- *          calls in tests/test_domain.c failed (mist_fog_eval at w_d > 1
- *          against mist_draine_eval: gcc's constant-propagated copy of a
- *          function; it comes and goes with the shape of the calling code,
- *          cause not pinned down).  gcc 12 also compiled an out-of-line
- *          copy of a guarded helper (the height fog's mist__hlayer, once
- *          it passed the inlining limit) with its NaN test as under
- *          -ffinite-math-only, though the copy carried the guard's
- *          attribute (cause not pinned down): that helper is always
- *          inlined (tests/fastmath/).  The cost: gcc does
- *          not inline a function with other floating-point flags into a
- *          fast-math caller, so every mist call stays a call: 1x to 3.5x
- *          the time per call of a plain -O2 build (bench/mist_bench.c:
- *          the cheap ones most, mist_fog_evalf 2.8x, mist_hg_evalf 2.2x
- *          (2.6x in a later busy session: 5.9 against 2.2 ns, best of three
- *          runs each), mist_hg_samplef 1.5x (3.1 against 2.1 ns, the same
- *          runs; 3.5x before its one-form rewrite); the iterative samplers
- *          1.0x to 1.1x); the batch forms vectorise and take 0.3x to 1.1x.
- *   clang  #pragma float_control(precise, on): inlined, no slower than
- *          -O2.  The pragma reaches arithmetic and comparisons only (clang
- *          14): the includer's flags stay on the ?: phis, the negations
- *          and the calls (libm's and mist's own) inside mist's functions,
- *          and with them nnan and ninf, which let the optimiser take such a
- *          value to be finite and fold a floating-point test of it away (a
- *          clamp of +inf to the largest value was folded to nothing: the
- *          height fog gave NaN or +inf for infinite coefficients and lights,
- *          mist_segment_linear(2, 2, INFINITY, 0, 1, &t) +inf).  So the
- *          height fog's sanitisers of input test the bits (mist__pos,
- *          mist__clampbig, mist__finite): every bad-input case of
- *          tests/fastmath/ (270 of them: the height fog, its layers and the
- *          step) gives what the precise build gives under clang -O2 and
- *          -O3 -march=native -ffast-math (and gcc -O2 -ffast-math).
- *          Elsewhere the bad-input handling tests floats; its tests pass
- *          under clang -O2 -ffast-math (test_domain), but no bit test
- *          backs it there.  And libm calls keep the flags, so a float
- *          square root may come from the reciprocal square root estimate,
- *          within 3.3 ulp instead of correctly rounded (measured over 3e8
- *          floats); float results can differ in the last bits, two inlined
- *          copies of one call from each other (tests/test_domain.c's
- *          bit-for-bit comparisons of two float direction samples).
- *          Contraction inside mist is clang's default (-ffp-contract=on).
- *          clang defines no macro for -fassociative-math or
- *          -freciprocal-math alone: only -ffast-math and
- *          -ffinite-math-only are seen, and guarded.
- *   Either way -ffast-math also links start-up code that flushes subnormal
- *   results to zero and reads subnormal inputs as zero (FTZ/DAZ), for the
- *   whole program: a result that would be subnormal is 0 (an absolute
- *   error below the type's smallest normal number), and a result computed
- *   through subnormal intermediates can lose accuracy (the stress test
- *   keeps to normal-range input under -ffast-math for that reason).  No
- *   pragma can change that.
- *   Not guarded: other compilers, and nvcc (its --use_fast_math acts on
- *   device code, where it approximates division, sqrt and exp).
- *   MIST_ALLOW_FAST_MATH turns the guard off: gcc then inlines again (up to
- *   3x faster under -ffast-math) but NaN and infinite input, |g| near 1
- *   and extreme magnitudes are no longer handled as documented.
+ * FAST MATH
+ *   Compiled with the includer's -ffast-math mist would break (gcc's
+ *   -ffinite-math-only deletes the NaN tests of the bad-input handling,
+ *   clang's reassociation undoes the stable forms).  So when the
+ *   translation unit has fast-math flags (__FAST_MATH__,
+ *   __FINITE_MATH_ONLY__, __ASSOCIATIVE_MATH__, __RECIPROCAL_MATH__), mist
+ *   compiles its own functions with precise floating point and gives the
+ *   includer's flags back after them (gcc 12, clang 14 measured):
+ *   gcc    #pragma GCC optimize("no-fast-math", ...): the documented results
+ *          hold (the suite passes under -O2 -ffast-math: variant_fastmath).
+ *          gcc does not inline a function with other floating-point flags
+ *          into a fast-math caller: each call stays a call, 1x to 3.5x the
+ *          time of a plain -O2 build (the cheap evaluations most).
+ *   clang  #pragma float_control(precise, on): inlined, no slower.  The
+ *          pragma reaches arithmetic and comparisons only: the includer's
+ *          no-NaN and no-inf flags stay on selects, negations and calls,
+ *          where they may fold a floating-point test away.  The height
+ *          fog's input tests and the prepared sampler's table index are
+ *          on the bits, so their bad input gets its documented values
+ *          (tests/fastmath/); the other functions' bad-input tests are
+ *          floating-point ones, which pass under clang -O2 and -O3
+ *          -march=native -ffast-math (test_domain) but are not guaranteed
+ *          there.  libm calls keep the flags: a float sqrt may be within
+ *          3.3 ulp, so float results may differ in the last bits.
+ *   Either way -ffast-math links start-up code that flushes subnormals to
+ *   zero (FTZ/DAZ) for the whole program: a result that would be subnormal
+ *   is 0.  Not guarded: other compilers, and nvcc's --use_fast_math.
+ *   MIST_ALLOW_FAST_MATH turns the guard off: faster under gcc, but NaN,
+ *   infinite and extreme input lose their documented results.  Memory
+ *   safety stays in every build: every index and size derived from a
+ *   floating-point value is bounded in integer arithmetic.
  *
  * EXCESS PRECISION (FLT_EVAL_METHOD 1 or 2: 32-bit x86 with x87 math)
  *   mist's stable forms, compensated sums and exact samplers assume every
- *   operation rounds to its type.  x87 arithmetic keeps 64-bit significands
- *   in registers and rounds where the compiler spills.  Measured with gcc
- *   12 -m32 (FLT_EVAL_METHOD 2), quick runs of the tests (MIST_TEST_QUICK=
- *   4): 22 checks failed (the float height fog's sun term 17x its bound,
- *   prepared and unprepared results apart over bad input, the droplet
- *   fits' d -> 0 limit, Mie averages at the length domain's ends); with
- *   -m32 -msse2 -mfpmath=sse every test passes.  So such a build stops
- *   with an error that says so (ctest compile_x87); define
- *   MIST_ALLOW_EXCESS_PRECISION to build it anyway, without those results.
+ *   operation rounds to its type; x87 registers keep 64-bit significands
+ *   and round where the compiler spills (22 test checks failed with gcc 12
+ *   -m32).  So such a build stops with an error (ctest compile_x87); build
+ *   with -msse2 -mfpmath=sse, or define MIST_ALLOW_EXCESS_PRECISION to build
+ *   it anyway, without those results.
  *
  * REFERENCES (section by section below)
- *   [JD23] J. Jendersie, E. d'Eon, "An Approximate Mie Scattering Function for
- *          Fog and Cloud Rendering", SIGGRAPH 2023 Talks, and its supplemental
- *          (../shared/references/jendersie-deon-2023-approximate-mie-
- *          supplemental.txt).
+ *   [JD23] J. Jendersie, E. d'Eon, "An Approximate Mie Scattering Function
+ *          for Fog and Cloud Rendering", SIGGRAPH 2023 Talks, and its
+ *          supplemental.
  *   [HG41] L. Henyey, J. Greenstein, ApJ 93 (1941).
  *   [CS92] W. Cornette, J. Shanks, Applied Optics 31 (1992).
  *   [D03]  B. Draine, ApJ 598 (2003).
  *   [DHB17] T. Duff et al., "Building an Orthonormal Basis, Revisited",
  *          JCGT 6(1), 2017.
- *
- * LICENSE: MIT (see end of file).
+ *   [I18]  K. Ishiyama, "An analytic height fog model for real-time
+ *          rendering", 2018.
+ *   [B08]  A. Bouthors, F. Neyret, N. Max, E. Bruneton, C. Crassin,
+ *          "Interactive multiple anisotropic scattering in clouds", I3D 2008.
  */
 /* The null pointer (C++11 and later: nullptr, for -Wzero-as-null-pointer-
  * constant), defined on every inclusion: mist_mie.h, which includes this
