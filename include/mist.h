@@ -46,7 +46,7 @@
  * ACCURACY (eps = 2^-53 double, 2^-24 float; worst as the tests print it)
  *   function                   bar                                  worst
  *   *_sample, mist_phase_*     |u - u*| <= 4 ulp(u*)                double 0.250,
- *     (scalar, prepared,         + 4 eps xi du*/dxi, u* the float128  float 0.125
+ *     (scalar, prepared,         + 4 eps xi du* / dxi, u* the float128 float 0.125
  *     batch)                     inverse CDF; monotone in xi          of the bar
  *   mist_hg_sample (double)    correctly rounded in practice        0 of 40000 not
  *                              (double-double; near u = 0 within      the rounded root
