@@ -485,10 +485,9 @@ typedef struct mist_hfogf {
  * moved off the chain of dependent operations, for latency: t6 / t7 as
  * t6 t7^2 / s (s = t7^3 > 0, its division runs beside the cbrt), 8 t4 /
  * (t0 t9) as 8 t4 t9 / (t0 t9^2) (beside the sqrt), 2 / t0 once.  The same
- * value to a few ulps; the unprepared samplers 0.87-0.88x (float) and
- * 0.92x (double) the time with the form as printed (one-off A/B harness,
- * interleaved in one process; float samples bit for bit the same over 2e6
- * random inputs, double ones within the bar: 96 of 5e5 differ, near u = 0). */
+ * value to a few ulps, and the unprepared samplers ~0.9x the time with the
+ * form as printed (float samples bit for bit the same over 2e6 random
+ * inputs, double ones within the bar). */
 #ifndef MIST_NO_DRAINE
 /* cbrt for eq. 6 below: its latency, not glibc's (23.8 against 13.7 ns in
  * a chain of dependent calls, x86 -O2 -march=native; 25.7 against 18.2
@@ -836,10 +835,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__fms)(MIST__T a, MIST__T b, MIST__T c)
 /* +inf is the exact limit instead of inf/inf.                              */
 /* ======================================================================== */
 
-/* |x| by fabs, for the hot paths: gcc compiled some x < 0 ? -x : x to a
- * branch, mispredicted where the sign is random (the prepared Draine
- * sampler 24.4 -> 21.2-22.8 ns with these, the unprepared one's
- * certificate 86 -> 71 ns; one-off A/B harnesses, gcc 12 -O3 -march=native) */
+/* |x| by fabs, for the hot paths: gcc compiles some x < 0 ? -x : x to a
+ * branch, mispredicted where the sign is random (~15% of the prepared
+ * Draine sampler's time, measured with gcc 12 -O3 -march=native) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__abs)(MIST__T x)
 {
     return MIST__M(fabs)(x);
@@ -890,25 +888,20 @@ MIST__F void MIST__FN(mist__draine_c)(MIST__T alpha, MIST__T *c0, MIST__T *c1)
 /* its remainder (mist__hg_dd).  About 2^-104 of error, relative to the    */
 /* terms (~1): correctly rounded in practice but near u = 0, where 1 - q    */
 /* keeps it as an absolute error (test_accuracy holds it to half an ulp +   */
-/* 2^-100; an independent check with exact rational references, ninth      */
-/* session of 2026-11-27: not the rounded root only where |u| < ~2^-40, up  */
-/* to ~100 ulps at |u| ~ 2^-59; such u are ~1e-12 of samples), and at       */
+/* 2^-100; against exact rational references not the rounded root only     */
+/* where |u| < ~2^-40, up to ~100 ulps at |u| ~ 2^-59; such u are ~1e-12 of */
+/* samples), and at                                                         */
 /* |g| < ~2^-105 where u's leading term, 2 xi - 1 or 3g/2, is exactly a     */
 /* rounding tie that the term of relative size g, below double-double's     */
 /* reach, would break (1 ulp).  bench/mist_ddcheck.c: 1e5 random (g, xi), g */
 /* from 1e-300 to 1 - 2^-53, xi down to 2^-1074, against float128: within   */
-/* 0.25x the bar, 99959 the rounded root, with fma or Dekker's product (of */
-/* the other 41, 30 the float128 reference's error and 11 such ties, by    */
-/* mpmath at 4000 bits).  Monotone (0 reversed pairs), branch-free          */
-/* (the batch form vectorises where fma is one instruction); 2.95x eq. 3    */
-/* with fma (./build/mist_bench).  Every build that rounds each operation   */
-/* computes the same samples.  (Until the ninth session of 2026-11-27 a     */
-/* build with a wider long double and no fma, the default x86 one, ran the  */
-/* three forms in long double: ~0.1% of samples an ulp off, near u = 0 an   */
-/* absolute error up to 2^-63; double-double by Dekker's product, once it   */
-/* dropped its overflow branches for these bounded terms, costs about the   */
-/* same: 14.5-14.9 ns against long double's 13.2-15.9, g .8 to .05, gcc 12  */
-/* -O2, measured side by side; docs/history.md.)                            */
+/* 0.25x the bar; every sample the rounded root but at such ties (checked  */
+/* exactly: bench/hg_exact.py).  Monotone (0 reversed pairs), branch-free   */
+/* (the batch form vectorises where fma is one instruction); ~3x eq. 3 with */
+/* fma (./build/mist_bench).  Every build that rounds each operation        */
+/* computes the same samples.  Long double instead would put ~0.1% of      */
+/* samples an ulp off, and Dekker's product for these bounded terms needs  */
+/* no overflow branches, so it costs about what long double does.          */
 /* ======================================================================== */
 
 /* The terms, for g in [0, 1), given x = xi and y = 1 - xi (either may carry
@@ -1078,12 +1071,9 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__mirror)(MIST__T xi, MIST__T *x)
 /* (mist__rayleigh_udd; bench/mist_ddcheck.c: 19998 of 2e4 random xi, down  */
 /* to 2^-1074, the rounded float128 root, 0 reversed; the batch form        */
 /* vectorises, with fma or Dekker's product).  Every build that rounds each */
-/* operation computes the same samples.  (Until the ninth session of        */
-/* 2026-11-27 a build with a wider long double and no fma, the default x86  */
-/* one, solved in long double, two Halley steps from a cubic start: ~0.03%  */
-/* of samples an ulp off, measured over 2e6 random xi, and slower than      */
-/* double-double by Dekker's product without its overflow branches:         */
-/* 17.3-17.9 against 16.0-16.5 ns.)                                         */
+/* operation computes the same samples (long double, two Halley steps from  */
+/* a cubic start, put ~0.03% of samples an ulp off, measured over 2e6       */
+/* random xi, and was no faster).                                           */
 /* ======================================================================== */
 
 /* v = 1 + u with v (v^2 - 3v + 6) = 8x, x in [0, 1/2]: one Halley step from
@@ -1094,8 +1084,8 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__mirror)(MIST__T xi, MIST__T *x)
  * [0, 1] gives the sample of two steps from a cubic start, 1.5e8 checked,
  * no reversal over all floats in [1/2, 1]; 0.80x the time); double's Newton
  * step on the exact residual then leaves ~1e-31 (mist__rayleigh_udd: the
- * same samples as from two steps, 2e7 random xi crowded to 0 and 1;
- * 19.8 -> 13.0 ns in mist_bench, the fourth session of 2026-11-27). */
+ * same samples as from two steps, 2e7 random xi crowded to 0 and 1, at
+ * ~0.65x their time). */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__rayleigh_v)(MIST__T x)
 {
     MIST__T v, f, fp, x2 = x * x, x4 = x2 * x2;
@@ -1280,12 +1270,11 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
     /* float: the parameter's terms before any branch, so that a caller's
-     * loop over one medium hoists them (computed inside the domain test's
-     * branch they were not: 1.28x eq. 3 with g at run time, 0.88-0.90x
-     * now, docs/history.md; on an H200 1.78 -> 1.61 ps a sample).  The
-     * unprepared float Draine sampler calls mist__hg_any for alpha = 0: in
-     * CUDA device code nvcc allocated it 90 registers with this inlined,
-     * 80 without (ptxas -v, sm_90, nvcc 13; the same arithmetic) */
+     * loop over one medium hoists them (gcc does not hoist work out of a
+     * conditional block: 1.28x eq. 3 with g at run time inside the branch,
+     * ~0.9x before it).  The unprepared float Draine sampler calls
+     * mist__hg_any for alpha = 0: in CUDA device code nvcc allocates it 90
+     * registers with this inlined, 80 without (ptxas -v, sm_90) */
     MIST__W t[3];
     MIST__FN(mist__hg_par)(g, t);
     if (MIST__FN(mist__gxi_in)(g, xi)) return MIST__FN(mist__hg_at)(t, xi);
@@ -1301,8 +1290,8 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /*                                                                          */
 /* [JD23 eq. 6] inverts the CDF with a quartic in closed form.  Typed in    */
 /* verbatim it is NaN at g = 0 and alpha = 0, wrong by 0.056 in u at g =    */
-/* 1e-5 in double, and by 0.82 at g = 0.01, alpha = 250 in float (measured, */
-/* ../shared/references/README.md): its terms cancel as 1/g^3.              */
+/* 1e-5 in double, and by 0.82 at g = 0.01, alpha = 250 in float (measured  */
+/* against a float128 inversion): its terms cancel as 1/g^3.                */
 /*                                                                          */
 /* mist inverts the same CDF, written without cancellation, by safeguarded  */
 /* Newton iteration.  Integrating [JD23 eq. 5] (substituting V for u) and   */
@@ -1337,7 +1326,7 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* successor), and the iteration in T is skipped.  The stop is judged with  */
 /* the density at the step's far end and a bound on f'/f over the whole     */
 /* step: near alpha -> inf and u = 0 the density is ~u^2 and f at the       */
-/* iterate alone stopped far from the root (issue 2).                       */
+/* iterate alone stops far from the root.                                   */
 /* DOUBLE-DOUBLE: where fma is one instruction the double samplers finish   */
 /* instead with Newton steps whose residual is the same formula in          */
 /* compensated arithmetic (mist__draine_resc: within 2^-101 of its terms'   */
@@ -1345,33 +1334,26 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* rounded by a window and, where it straddles a midpoint, the residual's   */
 /* sign there (mist__draine_ddfin); long double remains the fallback where  */
 /* those steps do not settle in 64.  Correctly rounded in practice and      */
-/* monotone, with or without long double (test_accuracy_nold_native).       */
-/* mist_bench, mist_draine_sample (g .5, a 17): 132 ns (long double) -> 91  */
-/* (the residual as written) -> 89 (the step's divisions off its chain:     */
-/* 48 -> 39 ns of latency in a one-off harness).                            */
+/* monotone, with or without long double (test_accuracy_nold_native), and   */
+/* faster than the long double finish (0.7x, mist_draine_sample at g .5,    */
+/* alpha 17: the step's divisions are moved off its chain of dependent     */
+/* operations).                                                             */
 /* Where there is neither (MSVC x64, or MIST_NO_LONG_DOUBLE without fma)    */
 /* the same double-double finish runs with Dekker's product (mist__two_prod_b*/
 /* after scaling the weights below 1, mist__fms): the full bar and monotone */
 /* (test_accuracy_nold; mist_ddcheck built so: 0.25x, 19998 of 2e4 rounded),*/
-/* 122-123 ns a sample (g .5, alpha 17; 142-147 with the overflow tests of  */
-/* mist__two_prod, until the ninth session of 2026-11-27), prepared 110-115 */
-/* (133-146 then); the default x86 build's long double: 125-128, prepared   */
-/* 80-99 (gcc 12 -O2, one-off harness).  Until the fifth session those      */
-/* skipped the wide steps (60 and 31 ns): documented within 2x the bar for  */
-/* alpha <= 1e4 and not monotone; an independent check found 2.3x and a     */
-/* targeted scan near u = 0 (xi near F(0)) 3.1x.                            */
+/* at about long double's cost unprepared and ~1.4x it prepared.  Double    */
+/* alone, without the wide steps, is not enough: not monotone, and up to    */
+/* 3.1x the bar near u = 0 (xi near F(0)).                                  */
 /* The float sampler first rounds eq. 6's double answer to float and        */
 /* certifies it by one residual at that answer and the density there        */
 /* (mist__draine_cert): where the residual is certainly below half the      */
 /* density times the distance to the nearer rounding midpoint, it is the    */
 /* root correctly rounded, and no Newton step is taken (92% of random (g,   */
 /* alpha, xi) in eq. 6's domain, all but a few in 1e6 at g .5, alpha 17;    */
-/* measured).  mist_bench: mist_draine_samplef (g .5, a 17) 100-101 ns,     */
-/* 4.5x the printed eq. 6 in float -> 86-87 with two residuals at the       */
-/* midpoints, 3.8-3.9x; with eq. 6 reordered (mist__draine_eq6) 76-78 ns,   */
-/* 3.5x; with mist__cbrt 68-69 ns, 3.1-3.2x; with one residual 46-48 ns,    */
-/* 2.2x; with that residual always inlined 42 ns, 2.0x.  In CUDA device     */
-/* code too (H200: 27.7 -> 16.7 ps a sample, docs/history.md).             */
+/* measured): one residual where Newton steps take several, so the float   */
+/* sampler costs ~2-3x the printed eq. 6 in float (./build/mist_bench; on  */
+/* a GPU ~4x, docs/gpu.md).                                                 */
 /* WORST CASE.  Newton in u creeps where F is far from linear over a step: */
 /* next to u = +-1 at |g| -> 1 (the lobe narrower than an ulp: the steps    */
 /* round back to u or overshoot past +-1 and bisect) and near u = 0 at      */
@@ -1878,10 +1860,8 @@ MIST__F int MIST__FN(mist__draine_ddfin)(MIST__T g, MIST__T c0, MIST__T c1, MIST
  * loop, and with one-byte flags it made it 32, the whole block at once,
  * each double 8 registers (spills, and a body of 40 KB for the double
  * Draine kernel); short flags (16) were the fastest of char, short and
- * int (gcc 12 -O3 -march=native, AVX-512 and AVX2: the double Draine
- * kernel 17.4-18.3 -> 14.8-15.6 ns an element, the prepared double batch
- * 14.8-15.4 -> 12.8-13.5, the float kernel 9.5-9.7 -> 8.7-9.1; an
- * "everything" translation unit 322 -> 275 KB of code; one-off harness). */
+ * int (gcc 12 -O3 -march=native, AVX-512 and AVX2: 0.85-0.93x the time of
+ * one-byte flags an element, and 0.85x the code). */
 #define MIST__BLOCKS_FB(STMT, NEED, FIX)                                     \
     {   MIST__T x_[MIST__BLK], y_[MIST__BLK];                                \
         short f_[MIST__BLK];                                                 \
@@ -1988,7 +1968,7 @@ MIST__F int MIST__FN(mist__draine_ok6)(MIST__T g, MIST__T alpha)
  * 0.999998987, 12% at 1 - 2 2^-24), 99.5-100% at |g| 1e-3 ... 0.5 and
  * alpha 1e-12 ... 1e-6, 91-99.9% at |g| 0.5 ... 0.99 and alpha 1e4 ...
  * 1e20 (flat in alpha beyond 1e5), against 0-25% at alpha 1e-30 and 49-81%
- * at |g| 0.01 ... 0.3 and alpha 1e5 ... 1e20 (a one-off count, 2026-12-01).
+ * at |g| 0.01 ... 0.3 and alpha 1e5 ... 1e20 (counted over 2e4 random xi).
  * So the float try's domain is 1e-3 <= |g| <= 0.999999 with 1e-6 <=
  * alpha <= 1e4, and up to alpha 1e30 where |g| >= 0.5 (outside eq. 6's
  * domain a refused answer's fallback starts from the HG answer, as
@@ -2232,32 +2212,28 @@ MIST__F MIST__HOT int MIST__FN(mist__phase_try)(MIST__T g, MIST__T alpha, const 
  * float spacing below 1).  Where uf = +-1 (|ud| < 1) that is the midpoint
  * towards 0, 1 - 2^-25 (the one beyond, 1 + 2^-24, is farther), and the
  * proof below needs only [ud - h, ud] (|u*| <= 1 puts u* on uf's side of
- * the other): until 2026-12-01 those were refused, which near |g| = 1 was
- * every failure (62% of xi at g .9999, alpha 17; 10% at .9995, 3% at .999,
- * a one-off count).  If f = F_g' >= fm on [ud - h, ud + h], then
+ * the other; refusing them would refuse 62% of xi at g .9999, alpha 17,
+ * counted).  If f = F_g' >= fm on [ud - h, ud + h], then
  * |F_g(ud) - xi| < h fm puts F_g(ud - h) < xi < F_g(ud + h): u* lies within
  * h of ud, so on uf's side of both midpoints.  fm: f = (1 - g^2) w V^-3 /
  * (2 cn) with w = 1 + alpha u^2; over the interval w is least where |u|
  * is, and |u| >= |ud| - h >= (1 - 2^-24) |ud| (for normal uf, h is at most
  * half its float spacing, 2^-24 |uf|), so w >= (1 - 2^-24)^2 w(ud) for any
- * alpha (until 2026-12-01 the bound was 0.75 w(ud), from w's change 2
- * alpha (|ud| + h) h <= 1/4, which needed alpha <= 2^21); V^2 moves by at
+ * alpha (a bound from w's change 2 alpha (|ud| + h) h would need alpha
+ * <= 2^21); V^2 moves by at
  * most 2 |g| h, so with q = 2 |g| h / V^2(ud) and (1 + q)^-3/2 >=
  * 1 / (1 + 3q/2 + 3q^2/8) (the Taylor polynomial of (1 + q)^3/2 bounds it
  * above for q >= 0: its third derivative is negative), f >= 0.9999998
  * f(ud) / (1 + 3 |g| h / V^2 + 1.5 g^2 h^2 / V^4) = fm, positive for every
- * h.  (Until 2026-12-01 the V^2 factor was 1 - 3q/2, which is below this
- * one and negative where h is comparable with V^2: the certificate refused
- * every such ud, near |g| = 1 and u = 1.)  The residual r = S (F_g(ud)
+ * h (the first-order factor 1 - 3q/2 would be negative where h is
+ * comparable with V^2, near |g| = 1 and u = 1).  The residual r = S (F_g(ud)
  * - xi) and fs = S f(ud) V^2 (mist__draine_res); |r| is taken as at most
  * |r~| + 2^-46 sc, 16x its measured rounding error (4x the bound); the test
- * multiplied by V^4 (no division), with k = 0.7 in place of 0.9999998 (it
- * was 0.7 against 0.7499: the same answers where alpha <= 2^21): the
- * margin covers the few roundings of fs and V^2 (the test's negative
- * control passes a looser k).  This replaced the signs of two residuals at
- * the midpoints (the same answers where both accept: both are the root
- * correctly rounded); one residual's instructions instead of two waiting
- * on eq. 6's long chain (docs/history.md, "Speed"). */
+ * multiplied by V^4 (no division), with k = 0.7 in place of 0.9999998:
+ * the margin covers the few roundings of fs and V^2 (the test's negative
+ * control passes a looser k).  One residual, where the signs of two
+ * residuals at the midpoints would decide the same answers at twice the
+ * work waiting on eq. 6's long chain. */
 #if defined(MIST__W_EXACT)
 MIST__F MIST__HOT int MIST__FN(mist__draine_cert)(MIST__T g, MIST__T alpha, MIST__T xi,
                                                   MIST__W ud, MIST__W k)
@@ -2395,13 +2371,10 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
  * which mist__draine_solve takes from eq. 6's answer); the elements it does
  * not settle (the certificate fails, or the step does not settle: 0-4%)
  * take the scalar function.  So every value is mist_draine_sample's, bit
- * for bit, with no preparation (this replaced preparing the medium from
- * 1024 elements on within eq. 6's domain, which gave the prepared
- * sampler's values; see "Batch forms" in README.md; from 1024 elements on
- * it is taken where it leaves few elements: mist__draine_vn).  A prepared
+ * for bit, with no preparation (from MIST_DRAINE_PREPARE_N elements on it
+ * is taken where it leaves few elements: mist__draine_vn).  A prepared
  * medium's start table takes its 129 nodes from it too: the same nodes,
- * and preparing costs a quarter of what it did (README.md, "Prepared phase
- * functions"). */
+ * and preparing costs a quarter of 129 scalar samples. */
 #if !defined(__CUDA_ARCH__) && defined(__NO_MATH_ERRNO__) \
     && (defined(MIST__W_EXACT) || defined(MIST__DDV))
 #  define MIST__DRAINE_V 1
@@ -2415,8 +2388,8 @@ MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
  * certificate or the double step (its terms cancel as 1/g^3; and at large
  * alpha many roots lie near u = 0, where the float spacing is fine):
  * kernel / prepared batch with its preparation, ns an element at n = 4096
- * (gcc 12 -O3 -march=native -fno-math-errno, AMD EPYC, 2026-12-01, a
- * one-off harness): float g 1e-3, alpha 1: 95 / 9.2; g 3e-3, alpha 10:
+ * (gcc 12 -O3 -march=native -fno-math-errno, AMD EPYC, measured): float
+ * g 1e-3, alpha 1: 95 / 9.2; g 3e-3, alpha 10:
  * 48 / 7.5; g 0.1, alpha 1e4: 43 / 10; double 211 / 18, 138 / 17, 84 / 22;
  * inside the rule at most 1.7x (float g 0.01, alpha 10: 10.8 / 6.5; double
  * g 0.5, alpha 1e4: 30 / 20), and the kernel's values are the scalar
@@ -2605,10 +2578,9 @@ MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
 /* bar, within a few eps of xi, but where the density is tiny (Draine at    */
 /* alpha 1e100 near u = 0) that is up to 1e6 eps of u apart (measured).     */
 /* A fog with tiny w_d (and 1 - g_d^2) keeps its Draine lobe: w_d applies  */
-/* after the lobe's division (before the eighth session of 2026-11-27 it    */
-/* multiplied the normalisation, which underflowed: w_d 2^-1020 with g_hg   */
-/* = 1 and g_d = -(1 - 2^-53) gave density 0 at u = -1 where the lobe's is  */
-/* ~1e-276; found by an independent check; tests/test_domain.c).            */
+/* after the lobe's division (multiplying the normalisation instead would  */
+/* underflow: w_d 2^-1020 with g_hg = 1 and g_d = -(1 - 2^-53) would give  */
+/* density 0 at u = -1 where the lobe's is ~1e-276; tests/test_domain.c).  */
 /* HG, Draine, Cornette-Shanks and the fog are one mixture                  */
 /* (1 - w) HG(g_hg) + w Draine(g, alpha): HG is w = 0, Draine w = 1.        */
 /* mist_phase_sample is the inverse CDF (monotone in xi) for every kind but */
@@ -2777,13 +2749,10 @@ MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
     return r;
 }
 
-/* The HG lobe's sample at xi: float (also device code: H200 2.77 -> 2.70
- * ps a sample) with the terms of g read
- * from the medium (p->hg), the same arithmetic as mist_hg_sample's: in a
- * one-off harness (calls, not inlined) the prepared HG sampler took 1.47
- * ns against 2.02 recomputing them (mist_hg_samplef with g hoisted: 1.33);
- * mist_bench: 1.31-1.35x -> 1.09-1.12x the printed eq. 3 (one medium),
- * 1.48x -> 1.15x (four) */
+/* The HG lobe's sample at xi: float with the terms of g read from the
+ * medium (p->hg), the same arithmetic as mist_hg_sample's, so that a
+ * sample does not recompute them (~0.75x the time, and ~0.85x in
+ * mist_bench's four media against the printed eq. 3) */
 MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
@@ -2797,13 +2766,11 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
  * (|g| >= 0.999; its start table unused): there the table's float nodes
  * hold 1 - u (~1e-6 at g 0.999, where most of the lobe's mass lies near
  * u = 1) only to a few percent, and from their start both straight-line
- * steps missed their bound for 59% of xi (g 0.999, alpha 17, a one-off
- * count).  mist_bench, g 0.999, alpha 17: the batch 55-57 -> 7.9-8.7 ns a
- * sample (the unprepared kernel), one at a time 63-67 -> 71-85 (the
- * unprepared sampler; above 0.999 it is the faster one: 67 against 87 at
- * .9995, one-off; below, the table wins: 46 against 68 at .998).  The
- * double lobe's compensated step settles from its double table (14-17 ns
- * a sample). */
+ * steps miss their bound for 59% of xi (g 0.999, alpha 17, counted).
+ * There the unprepared kernel makes the batch ~7x faster, and one at a
+ * time the unprepared sampler is the faster one above 0.999 (below, the
+ * table wins: 0.7x at .998; mist_bench).  The double lobe's compensated
+ * step settles from its double table. */
 MIST__F int MIST__FN(mist__phase_near1)(MIST__T g)
 {
     return MIST__FN(mist__abs)(g) >= MIST__C(0.999);
@@ -2837,9 +2804,8 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
         if (MIST__M(fabs)(p->g) < MIST__C(1) && p->c1 != MIST__C(0)) {
 #if defined(__CUDA_ARCH__) && defined(MIST__DDR)
             /* double in CUDA device code: eq. 6's start, as unprepared (an
-             * H200: 52.9 -> 44.9 ps a sample; the table's start and its
-             * double step cost more there than eq. 6, unlike on a CPU;
-             * without that step 78.6; README "On a GPU") */
+             * H200: 0.85x the time; the table's start and its double step
+             * cost more there than eq. 6, unlike on a CPU: docs/gpu.md) */
             return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0,
                                                  MIST__NULL);
 #endif
@@ -2860,7 +2826,7 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
  * gcc -ffast-math, header guard or not (x86: -mno-ieee-fp for the whole
  * file; the compare came out as 0 >= w), and a medium with w NaN (set by
  * hand: the constructors clamp it to 0) took the Draine branch there, -1
- * for the HG sample (found by a review's harness, 2026-12-01). */
+ * for the HG sample. */
 MIST__F MIST__HOT int MIST__FN(mist__gt0)(MIST__T x)
 {
     MIST__UB b;
@@ -2872,12 +2838,10 @@ MIST__F MIST__HOT int MIST__FN(mist__gt0)(MIST__T x)
  * inverse CDF, as the unprepared sampler of the same kind.  HG (g
  * sanitised already): the unprepared sampler's arithmetic with the
  * medium's terms of g (mist__phase_hg), here, in a function always inlined
- * (MIST__API_HOT), the rest a call (mist__phase_sample_w).  Until
- * 2026-12-01 the whole sampler was one function, which gcc did not inline
- * in a large translation unit (its unit-growth limits): the prepared HG
- * sampler was a call per sample there, 1.77-1.98x the unprepared one
- * (mist_bench, "prepared vs unprepared", an AMD EPYC; 1.07x in a one-off
- * file that inlined it) */
+ * (MIST__API_HOT), the rest a call (mist__phase_sample_w): as one
+ * function gcc does not inline it in a large translation unit (its
+ * unit-growth limits), and a call per HG sample costs ~1.8x the
+ * unprepared sampler */
 MIST__F MIST__API_HOT MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
     if (!p) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
@@ -2912,9 +2876,9 @@ MIST__F MIST__V3 MIST__FN(mist_phase_sample_dir)(const MIST__PHASE *p, MIST__V3 
 /* exp(-0.599085/(d-0.641583) - 0.665888), as Blender Cycles does: only     */
 /* this reading meets the 1.5-5 um fit at d = 5 (w_d 0.442 vs 0.448; the    */
 /* printed reading jumps to 0.206), and it is the one closer to Lorenz-Mie  */
-/* (measured: tests/test_fits.c, README "Fit error").                       */
+/* (measured: tests/test_fits.c, docs/mie.md).                              */
 /* The published ranges do not meet at d = 0.1 and 1.5: the fits are kept   */
-/* as published, with the jumps measured in README "Fit error".  Each type  */
+/* as published, with the jumps measured in docs/mie.md.  Each type       */
 /* compares d with its own rounding of the bounds, so that the literal 0.1  */
 /* (0.1f) lands in eq. 11-14 in both: mist_fog_from_diameterf(0.1f) and     */
 /* mist_fog_from_diameter(0.1) agree, while mist_fog_from_diameter((double) */
@@ -2993,8 +2957,8 @@ MIST__F MIST__T MIST__FN(mist__pow2inv)(MIST__T m)
  * (mist__pow2inv: exact), so no overflow or underflow.  Float: in double,
  * where the squares of floats neither overflow nor underflow (<= 1.2e77,
  * >= 2e-90), so |v|^2 itself tells 0, NaN and inf apart; one rounding at
- * the end.  One division, for 1/|v| (it had divided by the largest
- * component: three more; docs/history.md, "Every other public function") */
+ * the end.  One division, for 1/|v| (dividing by the largest component
+ * would take three more) */
 MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
 {
 #if defined(MIST__W_EXACT)
@@ -3962,8 +3926,7 @@ MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, 
 /* Analytic height fog [I18]                                                */
 /*                                                                          */
 /* [I18] K. Ishiyama, "An analytic height fog model for real-time           */
-/*       rendering", 2018 (../shared/references/ishiyama-2018-analytic-     */
-/*       height-fog.txt).                                                   */
+/*       rendering", 2018.                                                  */
 /* [B08] A. Bouthors, F. Neyret, N. Max, E. Bruneton, C. Crassin,           */
 /*       "Interactive multiple anisotropic scattering in clouds", I3D 2008. */
 /*                                                                          */
