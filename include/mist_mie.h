@@ -210,6 +210,7 @@ extern "C" {
 
 #define MIST_MIE__PI    3.14159265358979323846264338327950288
 #define MIST_MIE__X_TINY 1e-8   /* below: the dipole limit (see the sphere) */
+#define MIST_MIE__NEAR1 1e-3    /* |m - 1| below: cross products (the sphere) */
 
 /* ------------------------------------------------------------------------ */
 /* Types                                                                    */
@@ -550,12 +551,13 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1, n2;
+    int pec, nt, nw, n, n1, n2, near;
     double *coef, *dm, *dx;
     double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
     mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
+    mist_mie_complex d1 = mu1, k1 = mu1, k2 = mu1, pz0 = mu1, zi = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
@@ -642,6 +644,11 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     dx = work + 8 * ((size_t)nt + 1);          /* D_n(x) for n > x          */
     ix = 1 / x;
     z = mist_mie__scale(m, x);
+    /* n > max(x, |m| x) from n2 on; below it, for m near 1, the cross
+     * products (see the sphere) and no D_n(mx) */
+    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
+    d1 = mist_mie_cplx(m.re - 1, m.im);
+    near = !pec && n2 > 1 && mist_mie__abs2(d1) < MIST_MIE__NEAR1 * MIST_MIE__NEAR1;
     /* the fractions at nt + 1: psi_nt / psi_{nt+1} = 1 / (z s_nt(z)), and
      * D_nt(z) = (nt + 1)/z - z s_nt(z) (see the sphere) */
     if (!pec) {
@@ -649,7 +656,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         fz = mist_mie__ratio(nt + 1, z);
         d = mist_mie__sub(mist_mie__scale(zi, nt + 1.0), mist_mie__inv(fz));
         dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
-        for (n = nt; n > 1; --n) {
+        for (n = nt; n > (near ? n2 : 1); --n) {
             mist_mie_complex nz = mist_mie__scale(zi, (double)n);
             d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
             dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
@@ -672,7 +679,6 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
 
     /* n > max(x, |m| x): U_n = (m D_n(mx) - D_n(x)) / x, see above */
-    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
     if (!pec && n2 <= nt) {
         mist_mie_complex zw = mist_mie__mul(z, z), smp, tp, u;
         double w = x * x, sxp = 1 / (x * fx);                     /* s_nt(x) */
@@ -701,6 +707,38 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
 
     sinx = sin(x); cosx = cos(x);
+    if (near) {
+        /* n < n2, m near 1: psi_n(mx) upward (stored in the coefficients'
+         * slots 0, 1, psi_n(x) in 4), then E_n downward (slots 2, 3) from
+         * E_n2 = psi_n2(mx) psi_n2(x) ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m */
+        mist_mie_complex p0, p1, pn = mist_mie_cplx(0, 0), e = pn;
+        double ch = cosh(z.im), sh = sinh(z.im), sr = sin(z.re), cr = cos(z.re);
+        double q0 = cosx, q1 = sinx, q = 0;
+        int nh = n2 <= nt ? n2 : nt;
+        zi = mist_mie__inv(z);
+        k1 = mist_mie__div(d1, mist_mie__scale(m, x));                 /* (m-1)/(mx) */
+        k2 = mist_mie__mul(k1, mist_mie_cplx(m.re + 1, m.im));       /* (m^2-1)/(mx) */
+        p0 = mist_mie_cplx(cr * ch, -sr * sh);                        /* cos z */
+        p1 = pz0 = mist_mie_cplx(sr * ch, cr * sh);                   /* sin z */
+        for (n = 1; n <= nh; ++n) {
+            double *c = coef + 6 * (size_t)(n - 1);
+            pn = mist_mie__sub(mist_mie__scale(mist_mie__mul(zi, p1), 2.0 * n - 1), p0);
+            q = n < n1 ? (2.0 * n - 1) * ix * q1 - q0 : q1 / (dx[n] + n * ix);
+            c[0] = pn.re; c[1] = pn.im; c[4] = q;
+            p0 = p1; p1 = pn; q0 = q1; q1 = q;
+        }
+        if (n2 <= nt) {
+            mist_mie_complex u = mist_mie_cplx(dm[2 * n2] * x, dm[2 * n2 + 1] * x);
+            e = mist_mie__sub(mist_mie__scale(d1, dx[n2] + n2 * ix), u);
+            e = mist_mie__div(mist_mie__scale(mist_mie__mul(pn, e), q), m);
+        }
+        for (n = n2 - 1; n >= 1; --n) {
+            double *c = coef + 6 * (size_t)(n - 1);
+            pn = mist_mie_cplx(c[0], c[1]);
+            e = mist_mie__add(e, mist_mie__scale(mist_mie__mul(k1, pn), (2.0 * n + 1) * c[4]));
+            c[2] = e.re; c[3] = e.im;
+        }
+    }
     psi0 = cosx; psi1 = sinx;                   /* psi_{-1}, psi_0 */
     chi0 = -sinx; chi1 = cosx;                  /* chi_{-1}, chi_0 */
     for (n = 1; n <= nt; ++n) {
@@ -711,8 +749,26 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         chi = (2 * fn - 1) * ix * chi1 - chi0;
         xin = mist_mie_cplx(psi, -chi);
         xim = mist_mie_cplx(psi1, -chi1);
-        if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
-        if (!pec && n >= n2) {
+        if (!pec && !(near && n < n2)) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
+        if (near && n < n2) {
+            /* cross products: pn = psi_n(mx), en = E_n, psi = psi_n(x) */
+            const double *c = coef + 6 * (size_t)(n - 1);
+            mist_mie_complex pn = mist_mie_cplx(c[0], c[1]), en = mist_mie_cplx(c[2], c[3]);
+            mist_mie_complex pd, wa, wb, va, vb, t;
+            double chd = chi1 - nx * chi;                       /* chi_n'(x) */
+            pd = mist_mie__sub(pz0, mist_mie__mul(mist_mie__scale(pn, (double)n), zi));
+            t = mist_mie__scale(pn, psi);                       /* psi_n(mx) psi_n(x) */
+            wb = mist_mie__sub(mist_mie__scale(mist_mie__mul(d1, pz0), psi), en);
+            wa = mist_mie__sub(mist_mie__mul(k2, mist_mie__scale(t, (double)n)),
+                               mist_mie__add(en, mist_mie__scale(mist_mie__mul(d1, pn), psi1)));
+            vb = mist_mie__sub(mist_mie__scale(mist_mie__mul(m, pd), chi),
+                               mist_mie__scale(pn, chd));
+            va = mist_mie__sub(mist_mie__scale(pd, chi),
+                               mist_mie__scale(mist_mie__mul(m, pn), chd));
+            a = mist_mie__div(wa, mist_mie_cplx(wa.re + va.im, wa.im - va.re));
+            b = mist_mie__div(wb, mist_mie_cplx(wb.re + vb.im, wb.im - vb.re));
+            pz0 = pn;
+        } else if (!pec && n >= n2) {
             /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
              * (x U_n - (mu - 1) D_n(x)) / mu.  The denominators T xi_n -
              * xi_{n-1} = num - i (T chi_n - chi_{n-1}), as T psi_n -

@@ -10,7 +10,9 @@ i mi, mi >= 0.  Prints a C table: x, mr, mi, Q_ext, Q_sca, g, Q_back,
 p(1), p(0), p(-1) (per steradian, normalised over the sphere).
 Run: python3 tests/mie_mpmath_ref.py   (mpmath; a few minutes).
      python3 tests/mie_mpmath_ref.py near1: test_near_one's table (m close
-     to 1: Q_sca, g, Q_back, S1 and S2 at mu = 0.5 and -1; about a minute)."""
+     to 1: Q_sca, g, Q_back, S1 and S2 at mu = 0.5 and -1; about a minute).
+     python3 tests/mie_mpmath_ref.py near1x: test_near_one_inner's table
+     (the same at x |m| >= 1; a few minutes)."""
 import math
 import mpmath as mp
 
@@ -143,11 +145,30 @@ NEAR1 = [
     (1e-9, 1.0, 1e-300), (2e-9, 1.0000000000000002, 0.0),
 ]
 
-def main_near1():
-    for x, mr, mi in NEAR1:
+# m close to 1 at x |m| >= 1 (test_near_one_inner): the terms n <= |m| x,
+# x = 1.5 to 8000 and m - 1 from 1e-5 down to 1e-12, some with an
+# imaginary part, two purely imaginary, two with m - 1 far below double's
+# range for the efficiencies (Q_sca, Q_back print 0 there; g and the
+# ratios of the amplitudes stay meaningful).
+NEAR1X = [
+    (1.5, 1.00001, 0.0), (1.5, 1.0000001, 5e-8), (1.5, 1.000000001, 0.0),
+    (1.5, 1.000000000001, 1e-12),
+    (10.0, 1.00001, 1e-6), (10.0, 1.0000001, 0.0), (10.0, 1.000000001, 3e-10),
+    (10.0, 1.000000000001, 0.0), (10.0, 1.0, 1e-10),
+    (100.0, 1.00001, 0.0), (100.0, 1.0000001, 1e-8), (100.0, 1.000000001, 0.0),
+    (100.0, 1.000000000001, 5e-13),
+    (1000.0, 1.00001, 2e-6), (1000.0, 1.0000001, 0.0), (1000.0, 1.000000001, 1e-9),
+    (1000.0, 1.000000000001, 0.0), (1000.0, 1.0, 1e-14),
+    (8000.0, 1.00001, 1e-7), (8000.0, 1.0000001, 0.0), (8000.0, 1.000000001, 0.0),
+    (8000.0, 1.000000000001, 1e-12),
+    (10.0, 1.0, 1e-200), (1.5, 1.0, 1e-310),
+]
+
+def main_near1(cases):
+    for x, mr, mi in cases:
         v = reference_near1(x, mr, mi, (0.5, -1))
         print('    {%s, %s, %s,\n     %s},' % (repr(x), repr(mr), repr(mi),
               ',\n     '.join(mp.nstr(t, 20, min_fixed=1, max_fixed=0) for t in v)), flush=True)
 
 if __name__ == '__main__' and len(__import__('sys').argv) > 1:
-    main_near1()
+    main_near1(NEAR1X if __import__('sys').argv[1] == 'near1x' else NEAR1)
