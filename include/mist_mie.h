@@ -478,7 +478,39 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
 /* Every term carries the factor mu - 1: no cancellation, a few eps a term */
 /* whatever m - 1.  a_n's numerator is psi_n (x U_n - (mu - 1) D_n(x)) / mu,*/
 /* and the denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}). */
-/* Below n = max(x, |m| x) the loss of 1/|m - 1| remains (see ACCURACY).   */
+/* Below n2 = max(x, |m| x) + 1 the numerators T psi_n - psi_{n-1} are    */
+/* O(m - 1) of psi_{n-1}: they lose 1/|m - 1| of their digits (g 3.5e-9   */
+/* off at x = 1.5, m = 1 + 1e-7).  For |m - 1| < 1e-3 (MIST_MIE__NEAR1)   */
+/* a_n and b_n are written there with p_n = psi_n(mx), q_n = psi_n(x) in  */
+/* pole-free products (b_n's numerator and denominator times p_n, a_n's   */
+/* times m p_n; f_n' = f_{n-1} - n/z f_n):                                */
+/*   b_n = W_n / (W_n - i V_n),    W_n = m p_n' q_n - p_n q_n'            */
+/*                                     = (m - 1) p_{n-1} q_n - E_n,       */
+/*                                 V_n = m p_n' chi_n - p_n chi_n',       */
+/*   a_n = W'_n / (W'_n - i V'_n), W'_n = p_n' q_n - m p_n q_n'           */
+/*     = n (m^2 - 1)/(mx) p_n q_n - (m - 1) p_n q_{n-1} - E_n,            */
+/*                                 V'_n = p_n' chi_n - m p_n chi_n',      */
+/* where E_n = p_n q_{n-1} - p_{n-1} q_n (the Casoratian of the two       */
+/* recurrences) changes by  E_n - E_{n+1} = (2n+1) (m - 1)/(mx) p_n q_n   */
+/* and vanishes as n -> infinity: it is summed downward from              */
+/*   E_n2 = p_n2 q_n2 ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m.             */
+/* Every term carries m - 1 as a computed factor (never as the difference */
+/* of two O(1) numbers): nothing cancels, whatever m - 1.  And they are   */
+/* products of psi, not ratios: a difference of the D_n, whose poles sit  */
+/* at the zeros of psi_n, is not consistent there with an upward psi_n.   */
+/* p_n = p_{n-1} / r_n with the r_n = D_n(mx) + n/(mx) of the downward    */
+/* recurrence (the same numbers: consistent at p's zeros; upward, psi_n   */
+/* of a complex argument loses e^(2 Im mx) of itself).  For real m the    */
+/* terms of E's sum (~ q_k^2 as m -> 1) share a sign; in general they     */
+/* add to at most ~(1 + |m - 1| x) |E_n|.  A few eps a term, a random walk*/
+/* over the ~x terms: the coefficients, Q and g within ~eps sqrt(x) (1 +  */
+/* |m - 1| x) relative.  At |m - 1| >= 1e-3 the direct form above loses   */
+/* at most ~4e-16 / |m - 1| <= 4e-13 and is the faster (no products).     */
+/* |m - 1| < 2^-64: m - 1 is scaled by 2^-es to [1/2, 1) (exact, also for */
+/* a subnormal m - 1), the coefficients are computed divided by 2^es (the */
+/* denominators take num 2^es; T starts at its first order w (mu - 1)     */
+/* s^3, the difference of the s being noise there), and the efficiencies  */
+/* and amplitudes (amp_scale_ = 2^es) are scaled back.                    */
 /* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
 /* b_n = psi_n / xi_n (the m -> infinity limit of the same formulas).       */
 /*                                                                          */
@@ -551,9 +583,9 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1, n2, near;
+    int pec, nt, nw, n, n1, n2, near, es = 0;
     double *coef, *dm, *dx;
-    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1;
+    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1, sc = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
     mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
@@ -649,17 +681,41 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
     d1 = mist_mie_cplx(m.re - 1, m.im);
     near = !pec && n2 > 1 && mist_mie__abs2(d1) < MIST_MIE__NEAR1 * MIST_MIE__NEAR1;
+    if (!pec) {
+        /* |m - 1| < 2^-64: m - 1 scaled by 2^-es to [1/2, 1) (exact, also
+         * for a subnormal m - 1) and the coefficients computed divided by
+         * sc = 2^es (see the sphere) */
+        double cm = fabs(d1.re) > fabs(d1.im) ? fabs(d1.re) : fabs(d1.im);
+        if (cm > 0 && cm < 0x1p-64) {
+            (void)frexp(cm, &es);
+            d1 = mist_mie_cplx(ldexp(d1.re, -es), ldexp(d1.im, -es));
+            sc = ldexp(1.0, es);
+        }
+    }
     /* the fractions at nt + 1: psi_nt / psi_{nt+1} = 1 / (z s_nt(z)), and
      * D_nt(z) = (nt + 1)/z - z s_nt(z) (see the sphere) */
     if (!pec) {
-        mist_mie_complex d, zi = mist_mie__inv(z);
+        mist_mie_complex d;
+        zi = mist_mie__inv(z);
         fz = mist_mie__ratio(nt + 1, z);
         d = mist_mie__sub(mist_mie__scale(zi, nt + 1.0), mist_mie__inv(fz));
         dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
-        for (n = nt; n > (near ? n2 : 1); --n) {
-            mist_mie_complex nz = mist_mie__scale(zi, (double)n);
-            d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
-            dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
+        if (!near) {
+            for (n = nt; n > 1; --n) {
+                mist_mie_complex nz = mist_mie__scale(zi, (double)n);
+                d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
+                dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
+            }
+        } else {
+            /* only r_n = D_n(mx) + n/z = psi_{n-1}(mx) / psi_n(mx), in the
+             * coefficients' slots 0, 1 (psi_n(mx) = psi_{n-1}(mx) / r_n
+             * below: the same r_n as the recurrence, so consistent at the
+             * zeros of psi_n) */
+            for (n = nt; n >= 1; --n) {
+                mist_mie_complex nz = mist_mie__scale(zi, (double)n), r = mist_mie__add(d, nz);
+                coef[6 * (size_t)(n - 1)] = r.re; coef[6 * (size_t)(n - 1) + 1] = r.im;
+                d = mist_mie__sub(nz, mist_mie__inv(r));
+            }
         }
     }
     /* first n with n > x, in [1, nt + 1] whatever x (an integer bound on
@@ -683,12 +739,18 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         mist_mie_complex zw = mist_mie__mul(z, z), smp, tp, u;
         double w = x * x, sxp = 1 / (x * fx);                     /* s_nt(x) */
         m2 = mist_mie__mul(m, m);
-        mu1 = mist_mie__mul(mist_mie_cplx(m.re - 1, m.im), mist_mie_cplx(m.re + 1, m.im));
+        mu1 = mist_mie__mul(d1, mist_mie_cplx(m.re + 1, m.im));      /* / sc */
         smp = mist_mie__inv(mist_mie__mul(z, fz));                  /* s_nt(mx) */
         /* the top term by the differences (it is past the tail; T's
-         * starting error shrinks by x^2 s s' a step below) */
-        tp = mist_mie_cplx(smp.re - sxp, smp.im);
-        u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+         * starting error shrinks by x^2 s s' a step below); scaled, by
+         * its first order x^2 (mu - 1) s^3 (the difference is noise) */
+        if (es == 0) {
+            tp = mist_mie_cplx(smp.re - sxp, smp.im);
+            u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+        } else {
+            tp = mist_mie__scale(mist_mie__mul(mu1, mist_mie__mul(smp, smp)), w * sxp);
+            u = mist_mie__sub(mist_mie__scale(mu1, -sxp), mist_mie__mul(m2, tp));
+        }
         dm[2 * nt] = u.re; dm[2 * nt + 1] = u.im;
         for (n = nt - 1; n >= n2; --n) {
             double an = 2.0 * n + 3, sx = 1 / (an - w * sxp);
@@ -711,21 +773,19 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         /* n < n2, m near 1: psi_n(mx) upward (stored in the coefficients'
          * slots 0, 1, psi_n(x) in 4), then E_n downward (slots 2, 3) from
          * E_n2 = psi_n2(mx) psi_n2(x) ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m */
-        mist_mie_complex p0, p1, pn = mist_mie_cplx(0, 0), e = pn;
+        mist_mie_complex p1, pn = mist_mie_cplx(0, 0), e = pn;
         double ch = cosh(z.im), sh = sinh(z.im), sr = sin(z.re), cr = cos(z.re);
         double q0 = cosx, q1 = sinx, q = 0;
         int nh = n2 <= nt ? n2 : nt;
-        zi = mist_mie__inv(z);
         k1 = mist_mie__div(d1, mist_mie__scale(m, x));                 /* (m-1)/(mx) */
         k2 = mist_mie__mul(k1, mist_mie_cplx(m.re + 1, m.im));       /* (m^2-1)/(mx) */
-        p0 = mist_mie_cplx(cr * ch, -sr * sh);                        /* cos z */
         p1 = pz0 = mist_mie_cplx(sr * ch, cr * sh);                   /* sin z */
         for (n = 1; n <= nh; ++n) {
             double *c = coef + 6 * (size_t)(n - 1);
-            pn = mist_mie__sub(mist_mie__scale(mist_mie__mul(zi, p1), 2.0 * n - 1), p0);
+            pn = mist_mie__div(p1, mist_mie_cplx(c[0], c[1]));
             q = n < n1 ? (2.0 * n - 1) * ix * q1 - q0 : q1 / (dx[n] + n * ix);
             c[0] = pn.re; c[1] = pn.im; c[4] = q;
-            p0 = p1; p1 = pn; q0 = q1; q1 = q;
+            p1 = pn; q0 = q1; q1 = q;
         }
         if (n2 <= nt) {
             mist_mie_complex u = mist_mie_cplx(dm[2 * n2] * x, dm[2 * n2 + 1] * x);
@@ -765,8 +825,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                mist_mie__scale(pn, chd));
             va = mist_mie__sub(mist_mie__scale(pd, chi),
                                mist_mie__scale(mist_mie__mul(m, pn), chd));
-            a = mist_mie__div(wa, mist_mie_cplx(wa.re + va.im, wa.im - va.re));
-            b = mist_mie__div(wb, mist_mie_cplx(wb.re + vb.im, wb.im - vb.re));
+            a = mist_mie__div(wa, mist_mie_cplx(wa.re * sc + va.im, wa.im * sc - va.re));
+            b = mist_mie__div(wb, mist_mie_cplx(wb.re * sc + vb.im, wb.im * sc - vb.re));
             pz0 = pn;
         } else if (!pec && n >= n2) {
             /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
@@ -777,13 +837,13 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             double dn = dx[n];
             qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
             num = mist_mie__scale(qa, psi);
-            t = mist_mie_cplx(qa.re + dn + nx, qa.im);
-            a = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
-                                                 num.im - (t.re * chi - chi1)));
+            t = mist_mie_cplx(qa.re * sc + dn + nx, qa.im * sc);
+            a = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                                 num.im * sc - (t.re * chi - chi1)));
             num = mist_mie__scale(dl, psi);
-            t = mist_mie_cplx(dl.re + dn + nx, dl.im);
-            b = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
-                                                 num.im - (t.re * chi - chi1)));
+            t = mist_mie_cplx(dl.re * sc + dn + nx, dl.im * sc);
+            b = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                                 num.im * sc - (t.re * chi - chi1)));
         } else {
         {   /* a_n */
             mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
@@ -829,14 +889,20 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
     s.n_terms = n < nt ? n : nt;
     s.q_sca = 2 * qsca * ix * ix;
+    s.q_ext = 2 * qext * ix * ix;
+    s.q_back = mist_mie__abs2(back) * ix * ix;
+    if (es) {                                   /* the coefficients / 2^es */
+        s.q_sca = ldexp(s.q_sca, 2 * es);
+        s.q_ext = ldexp(s.q_ext, es);
+        s.q_back = ldexp(s.q_back, 2 * es);
+        s.amp_scale_ = sc;
+    }
     if (pec || m.im == 0) {
         s.q_ext = s.q_sca;
         s.q_abs = 0;
     } else {
-        s.q_ext = 2 * qext * ix * ix;
         s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
     }
-    s.q_back = mist_mie__abs2(back) * ix * ix;
     s.g = qsca > 0 ? 2 * gsum / qsca : 0;
     s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
     if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal: |m-1| x^3

@@ -146,10 +146,10 @@ NEAR1 = [
 ]
 
 # m close to 1 at x |m| >= 1 (test_near_one_inner): the terms n <= |m| x,
-# x = 1.5 to 8000 and m - 1 from 1e-5 down to 1e-12, some with an
-# imaginary part, two purely imaginary, two with m - 1 far below double's
-# range for the efficiencies (Q_sca, Q_back print 0 there; g and the
-# ratios of the amplitudes stay meaningful).
+# x = 1.5 to 1e5 and m - 1 from 9e-4 down to 1e-12, some with an
+# imaginary part, some below 1, two purely imaginary, three with m - 1 far
+# below double's range for the efficiencies (Q_sca, Q_back print 0 there;
+# g and the amplitudes stay meaningful).
 NEAR1X = [
     (1.5, 1.00001, 0.0), (1.5, 1.0000001, 5e-8), (1.5, 1.000000001, 0.0),
     (1.5, 1.000000000001, 1e-12),
@@ -161,7 +161,9 @@ NEAR1X = [
     (1000.0, 1.000000000001, 0.0), (1000.0, 1.0, 1e-14),
     (8000.0, 1.00001, 1e-7), (8000.0, 1.0000001, 0.0), (8000.0, 1.000000001, 0.0),
     (8000.0, 1.000000000001, 1e-12),
-    (10.0, 1.0, 1e-200), (1.5, 1.0, 1e-310),
+    (10.0, 1.0, 1e-200), (1.5, 1.0, 1e-310), (0.01, 1.0, 1e-200),
+    (1.5, 0.99999999, 0.0), (100.0, 0.9999999, 0.0), (8000.0, 0.99999, 1e-6),
+    (100000.0, 1.000000001, 0.0), (100000.0, 1.0001, 1e-7), (100000.0, 1.0009, 0.0),
 ]
 
 def main_near1(cases):

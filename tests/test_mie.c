@@ -297,21 +297,30 @@ static int near1_check(const double *got, const double *ref, int cplx, double to
     return d <= tol / sc && got[0] == got[0];
 }
 
-static void test_near_one(void)
+/* One table of near1_ref's layout (label: the messages' prefix).  Tolerances
+ * (relative to the reference; see above): x max(|m|, 1) < 1: 1e-13; else,
+ * |m - 1| < 1e-3 (cross products): 1e-14 + 4 eps sqrt(x) (1 + |m - 1| x);
+ * |m - 1| >= 1e-3: 1e-13 + 1e-15 / |m - 1|; and the amplitudes add the
+ * rounding of their angle sums, 2 eps x^(3/2) min(1, sqrt(Q_sca)), which
+ * Q_back = 4 |S1(-1)|^2 / x^2 carries as 8 eps sqrt(x min(1, Q_sca) /
+ * Q_back) of itself. */
+static void near1_table(const double (*ref)[14], size_t count, const char *label)
 {
     static const char *name[7] = { "Qsca", "g", "Qback", "S1(.5)", "S2(.5)", "S1(-1)", "S2(-1)" };
-    const double sum_abs = 2 * DBL_EPSILON;     /* |dS| <= 2 eps x^(3/2), see above */
     size_t i;
     int k, controls = 0;
-    double worst = 0;
-    for (i = 0; i < sizeof near1_ref / sizeof near1_ref[0]; ++i) {
-        const double *r = near1_ref[i];
+    double worst[7] = {0, 0, 0, 0, 0, 0, 0};
+    for (i = 0; i < count; ++i) {
+        const double *r = ref[i];
         double x = r[0], dm = hypot(r[1] - 1, r[2]), am = hypot(r[1], r[2]);
         int inner = x * (am > 1 ? am : 1) < 1;
+        double rel = inner ? 1e-13 : dm < 1e-3 ? 1e-14 + 4 * DBL_EPSILON * sqrt(x) * (1 + dm * x)
+                                              : 1e-13 + 1e-15 / dm;
+        double sabs = inner ? 0 : 2 * DBL_EPSILON * x * sqrt(x * (r[3] < 1 ? r[3] : 1));
         mist_mie_sphere s = mist_mie_sphere_new(x, mist_mie_cplx(r[1], r[2]));
         mist_mie_complex a, b, c, d;
         double got[11], tol[7], e;
-        mt_check(s.status == MIST_MIE_OK, "near 1: x=%g m=%.17g+%gi status %d", x, r[1], r[2],
+        mt_check(s.status == MIST_MIE_OK, "%s: x=%g m=%.17g+%gi status %d", label, x, r[1], r[2],
                  s.status);
         mist_mie_amplitudes(&s, 0.5, &a, &b);
         mist_mie_amplitudes(&s, -1, &c, &d);
@@ -322,33 +331,44 @@ static void test_near_one(void)
             const double *rk = r + 3 + (k < 3 ? k : 3 + 2 * (k - 3));
             int cx = k >= 3;
             double ar = cx ? hypot(rk[0], rk[1]) : fabs(rk[0]);
-            if (inner) tol[k] = 1e-13 * ar;
-            else if (k < 2) tol[k] = (1e-13 + 1e-15 / dm) * ar;
-            else if (k == 2)
-                tol[k] = (1e-13 + 1e-15 / dm + 4 * sum_abs * sqrt(x) / sqrt(rk[0])) * ar;
-            else tol[k] = (1e-13 + 1e-15 / dm) * ar + sum_abs * x * sqrt(x);
+            tol[k] = rel * ar;
+            if (k == 2 && rk[0] > 0) tol[k] += 4 * sabs / (x * sqrt(rk[0])) * ar;
+            if (k >= 3) tol[k] += sabs;
             tol[k] += 2e-323;                      /* (values past double's range) */
             {
                 const double *gk = got + (k < 3 ? k : 3 + 2 * (k - 3));
                 double moved[2];
                 e = cx ? hypot(gk[0] - rk[0], gk[1] - rk[1]) : fabs(gk[0] - rk[0]);
-                if (e / tol[k] > worst) worst = e / tol[k];
+                if (e / tol[k] > worst[k]) worst[k] = e / tol[k];
+                if (verbose > 1)
+                    printf("  %s x=%g m-1=%.3g%+.3gi %s: %.2e relative, %.3f of the tolerance\n",
+                           label, x, r[1] - 1, r[2], name[k], ar > 0 ? e / ar : e, e / tol[k]);
                 mt_check(near1_check(gk, rk, cx, tol[k], ar > 0 ? ar : 1),
-                         "near 1: x=%g m=%.17g+%gi %s: %.17g vs %.17g (%.2e, tol %.2e)", x,
+                         "%s: x=%g m=%.17g+%gi %s: %.17g vs %.17g (%.2e, tol %.2e)", label, x,
                          r[1], r[2], name[k], gk[0], rk[0], e, tol[k]);
                 if (ar > 0) {                          /* negative control */
                     double f = 1 + 10 * tol[k] / ar;   /* 10 tolerances out */
                     moved[0] = rk[0] * f;
                     moved[1] = cx ? rk[1] * f : 0;
                     mt_check(!near1_check(gk, moved, cx, tol[k], ar),
-                             "near 1 control: x=%g %s accepted a moved reference", x, name[k]);
+                             "%s control: x=%g %s accepted a moved reference", label, x, name[k]);
                     ++controls;
                 }
             }
         }
         mist_mie_sphere_free(&s);
     }
-    if (verbose) printf("near 1: worst %.2f of the tolerance, %d controls\n", worst, controls);
+    if (verbose) {
+        printf("%s: worst of the tolerance", label);
+        for (k = 0; k < 7; ++k) printf(" %s %.2f", name[k], worst[k]);
+        printf("; %d controls\n", controls);
+    }
+}
+
+static void test_near_one(void)
+{
+    near1_table(near1_ref, sizeof near1_ref / sizeof near1_ref[0], "near 1");
+    near1_table(near1x_ref, sizeof near1x_ref / sizeof near1x_ref[0], "near 1, x |m| >= 1");
 }
 
 /* ======================================================================== */
@@ -1986,7 +2006,7 @@ int main(void)
 {
     const char *v = getenv("MIST_VERBOSE");
     clock_t t0 = clock();
-    verbose = v && *v && *v != '0';
+    verbose = v && *v && *v != '0' ? (*v == '2' ? 2 : 1) : 0;   /* 2: every near-1 check */
     test_wiscombe();
     test_series_tail();
     test_near_one();
