@@ -60,22 +60,26 @@
  *   to x = 1000, 1e-10 at x = 1e4; an independent check of 372 random
  *   cases with |m - 1| > 0.01, x from 1e-6 to 5000: Q and g within 5e-12,
  *   p(mu) within 1.3e-10 (x = 5000).
- *   m close to 1 (test_near_one, 26 mpmath cases): for n > max(x, |m| x)
- *   the coefficients are computed with m^2 - 1 factored out (see the
- *   sphere), so at x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g
- *   itself) and S1, S2 are within 1e-13 relative whatever m - 1 (measured
- *   at most 1e-15).  At x |m| >= 1 the terms n <= |m| x lose 1/|m - 1| of
- *   their digits: Q_ext, Q_sca, g and S within 1e-15 / |m - 1| relative
- *   (measured at most 4e-16 / |m - 1|); and S1, S2 carry the rounding of
- *   their ~x terms, 2 eps x^(3/2) absolutely (a random walk of N terms up
- *   to 2n each), which is what Q_back = 4 |S1(-1)|^2 / x^2 and p(mu) near
- *   180 degrees show where they are small: Q_back within 4 eps sqrt(x /
- *   Q_back) + 1e-15 / |m - 1| relative (x = 8000, m = 1.0001, Q_back =
- *   9.8e-11: 1.4e-9 measured, 8e-9 that bound).  Where |m - 1| x^3 is so
- *   small that the coefficients' squares leave the range (below ~1e-154),
- *   the series' Q_sca, g and p are 0 (the dipole limit, x < 1e-8, scales
- *   its coefficients by powers of 2 and keeps p and g exact down to a
- *   subnormal m - 1).  At mu = +-1 the angle factors are exact integers:
+ *   m close to 1 (test_near_one, 57 mpmath cases, x to 1e5, m - 1 from
+ *   1e-3 to 1e-12 and i 1e-310, real, complex, below 1): every coefficient
+ *   is computed with m - 1 or m^2 - 1 a factor (see the sphere), so at
+ *   x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g itself) and S1, S2
+ *   are within 1e-13 relative whatever m - 1 (measured at most 1e-15); at
+ *   x |m| >= 1 and |m - 1| < 1e-3 Q_ext, Q_sca and g (relative to g) within
+ *   1e-14 + 16 eps sqrt(x) (1 + |m - 1| x) relative whatever m - 1
+ *   (measured: Q_sca 4.5e-13 at x = 1e5, g 3.4e-14), at |m - 1| >= 1e-3
+ *   within 1e-13 + 1e-15 / |m - 1|.  S1, S2 too, and they carry the
+ *   rounding of their ~x terms, 8 eps x^(3/2) min(1, sqrt(Q_sca))
+ *   absolutely (a random walk of N terms up to (2n+1)(|a_n| + |b_n|)/2:
+ *   S(0.5) within 5.1e-10 relative at x = 1e5), which is what Q_back =
+ *   4 |S1(-1)|^2 / x^2 and p(mu) near 180 degrees show where they are
+ *   small: Q_back within 32 eps sqrt(x min(1, Q_sca) / Q_back) more
+ *   (x = 8000, m = 1.0001, Q_back = 9.8e-11: 2.1e-9 measured; S1(-1)
+ *   1.8e-9 at x = 1e5, m = 1.0001).  m - 1 below 2^-64 is scaled by a
+ *   power of 2, so g, p and S keep their digits down to a subnormal m - 1
+ *   (Q_sca and Q_back are 0 only where they leave double's range; the
+ *   dipole limit, x < 1e-8, scales its coefficients the same way).
+ *   At mu = +-1 the angle factors are exact integers:
  *   S1(1) = S2(1) and S2(-1) = -S1(-1) bit for bit.  Near mu = +-1 at
  *   large x, p moves by ~x^2/2 times mu's rounding (an independent check:
  *   1.4e-10 at x = 1000, mu = -1 + 2^-53).  Cut at N
@@ -686,7 +690,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
          * for a subnormal m - 1) and the coefficients computed divided by
          * sc = 2^es (see the sphere) */
         double cm = fabs(d1.re) > fabs(d1.im) ? fabs(d1.re) : fabs(d1.im);
-        if (cm > 0 && cm < 0x1p-64) {
+        if (cm > 0 && cm < 5.42101086242752217e-20) {         /* 2^-64 */
             (void)frexp(cm, &es);
             d1 = mist_mie_cplx(ldexp(d1.re, -es), ldexp(d1.im, -es));
             sc = ldexp(1.0, es);

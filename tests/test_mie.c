@@ -162,24 +162,27 @@ static void test_series_tail(void)
 /* at 40 digits plus those its recurrences and m - 1 cost, checked with 25  */
 /* more).  Values below double's range are written 0.                       */
 /* Where n > max(x, |m| x) the coefficients come from recurrences with      */
-/* (m^2 - 1) factored out (mist_mie.h, the sphere): at x |m| < 1 that is    */
-/* every term, and Q, g and S are within a few eps whatever m - 1 (the      */
-/* dipole limit, x |m| < 1e-8, adds g's leading term 0.16 x^2, exact to    */
-/* O(x^2 |m|^2) relative).  Tolerance 1e-13 relative there (measured at     */
-/* most 1e-15; the cancelling numerator had given g 3.1e-7 off at m =       */
-/* 1.0001, x = 0.003, 0.6 at x = 1e-7).  At x |m| >= 1 the terms n <=      */
-/* |m| x still lose 1/|m - 1| of their digits: Q_sca, g and S within       */
-/* 1e-15 / |m - 1| relative (measured at most 4e-16 / |m - 1|: g at x =    */
-/* 1.5, m = 1 + 1e-7).  The amplitudes also carry the rounding of their N  */
-/* ~ x terms, each up to (2n+1)/2 |a_n - b_n| <= 2n: a random walk of       */
-/* eps sqrt(sum 4 n^2) = 1.2 eps x^(3/2) absolutely, tolerance 2 eps        */
-/* x^(3/2) (measured at most 0.49 of it: S(-1) at x = 8000, m = 1.001).    */
-/* Q_back = 4 |S1(-1)|^2 / x^2 is tiny for m near 1 (the sum cancels), so   */
-/* that absolute error is 2 |dS| / |S1(-1)| = 4 eps sqrt(x / Q_back) of it  */
-/* relative, far above 1e-15 / |m - 1|: 1.4e-9 at x = 8000, m = 1.0001     */
-/* (Q_back = 9.8e-11), where 4 eps sqrt(x / Q_back) is 8e-9.  Every check  */
-/* is also made with the reference moved by 10 tolerances: it must fail    */
-/* (negative control).                                                      */
+/* (m^2 - 1) factored out, below it (|m - 1| < 1e-3) from the cross         */
+/* products W_n, V_n with m - 1 factored out (mist_mie.h, the sphere).  At  */
+/* x |m| < 1 that is every term, and Q, g and S are within a few eps        */
+/* whatever m - 1 (the dipole limit, x |m| < 1e-8, adds g's leading term    */
+/* 0.16 x^2, exact to O(x^2 |m|^2) relative): tolerance 1e-13 relative      */
+/* (measured at most 1e-15).  At x |m| >= 1, E_n's downward sum rounds a    */
+/* few eps a term over ~x terms whose moduli add to at most ~(1 + |m - 1|   */
+/* x) |E_n|: tolerance 1e-14 + 16 eps sqrt(x) (1 + |m - 1| x) relative for  */
+/* Q_sca and g (measured at most 0.40 of it: Q_sca 4.5e-13 at x = 1e5, m =  */
+/* 1 + 1e-9; g at most 3.4e-14); above |m - 1| = 1e-3 the direct form's     */
+/* 1e-13 + 1e-15 / |m - 1|.  The amplitudes also carry the rounding of      */
+/* their N ~ x terms, each up to (2n+1)/2 (|a_n| + |b_n|), whose squares    */
+/* add to at most ~x^3 min(1, Q_sca) ((2n+1)(|a_n|^2 + |b_n|^2) sums to     */
+/* x^2 Q_sca / 2): a random walk of ~eps x^(3/2) min(1, sqrt(Q_sca))        */
+/* absolutely, tolerance 8 eps x^(3/2) min(1, sqrt(Q_sca)) (measured at     */
+/* most 0.62 of it: S1(0.5) at x = 1e5, m = 1.0009).  Q_back = 4 |S1(-1)|^2 */
+/* / x^2 is tiny for m near 1 (the sum cancels), so that absolute error is  */
+/* 2 |dS| / |S1(-1)| = 32 eps sqrt(x min(1, Q_sca) / Q_back) of it relative */
+/* (2.1e-9 at x = 8000, m = 1.0001, Q_back = 9.8e-11, 0.36 of the           */
+/* tolerance at most).  Every check is also made with the reference moved   */
+/* by 10 tolerances: it must fail (negative control).                       */
 /* ======================================================================== */
 static const double near1_ref[][14] = {
         {0.003, 1.0001, 0.0,
@@ -431,10 +434,10 @@ static int near1_check(const double *got, const double *ref, int cplx, double to
 
 /* One table of near1_ref's layout (label: the messages' prefix).  Tolerances
  * (relative to the reference; see above): x max(|m|, 1) < 1: 1e-13; else,
- * |m - 1| < 1e-3 (cross products): 1e-14 + 4 eps sqrt(x) (1 + |m - 1| x);
+ * |m - 1| < 1e-3 (cross products): 1e-14 + 16 eps sqrt(x) (1 + |m - 1| x);
  * |m - 1| >= 1e-3: 1e-13 + 1e-15 / |m - 1|; and the amplitudes add the
- * rounding of their angle sums, 2 eps x^(3/2) min(1, sqrt(Q_sca)), which
- * Q_back = 4 |S1(-1)|^2 / x^2 carries as 8 eps sqrt(x min(1, Q_sca) /
+ * rounding of their angle sums, 8 eps x^(3/2) min(1, sqrt(Q_sca)), which
+ * Q_back = 4 |S1(-1)|^2 / x^2 carries as 32 eps sqrt(x min(1, Q_sca) /
  * Q_back) of itself. */
 static void near1_table(const double (*ref)[14], size_t count, const char *label)
 {
