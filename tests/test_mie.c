@@ -423,6 +423,24 @@ static const double near1x_ref[][14] = {
          -3.1064759410609119373e+1, 2.0377952953163765289e+1, 3.1064759410609119373e+1, -2.0377952953163765289e+1},
 };
 
+/* Q_ext of near1x_ref's absorbing cases (tests/mie_mpmath_ref.py           */
+/* near1x_ext, the same series; x, mr, mi, Q_ext).  Tolerance as Q_sca's.    */
+static const double near1x_qext[][4] = {
+    {1.5, 1.0000001, 5e-08, 2.000000339126620879e-7},
+    {1.5, 1.000000000001, 1e-12, 4.0000000000027236919e-12},
+    {10.0, 1.00001, 1e-06, 2.6686342959142142871e-5},
+    {10.0, 1.000000001, 3e-10, 8.0000001906495190959e-9},
+    {10.0, 1.0, 1e-10, 2.6666666647266551202e-9},
+    {100.0, 1.0000001, 1e-08, 2.6668650880874107918e-6},
+    {100.0, 1.000000000001, 5e-13, 1.3333333334859245282e-10},
+    {1000.0, 1.00001, 2e-06, 5.5248053294930764168e-3},
+    {1000.0, 1.000000001, 1e-09, 2.6666666719919106192e-6},
+    {1000.0, 1.0, 1e-14, 2.6666666666466668159e-11},
+    {8000.0, 1.00001, 1e-07, 1.4897681461974249293e-2},
+    {8000.0, 1.000000000001, 1e-12, 2.1333333333398755529e-8},
+    {8000.0, 0.99999, 1e-06, 3.3824629170938338732e-2},
+};
+
 /* |got - ref| <= tol (complex: the modulus), measured in units of sc > 0
  * (so no square underflows, also where -ffast-math makes hypot naive) */
 static int near1_check(const double *got, const double *ref, int cplx, double tol, double sc)
@@ -502,8 +520,25 @@ static void near1_table(const double (*ref)[14], size_t count, const char *label
 
 static void test_near_one(void)
 {
+    size_t i;
+    double worst = 0;
     near1_table(near1_ref, sizeof near1_ref / sizeof near1_ref[0], "near 1");
     near1_table(near1x_ref, sizeof near1x_ref / sizeof near1x_ref[0], "near 1, x |m| >= 1");
+    for (i = 0; i < sizeof near1x_qext / sizeof near1x_qext[0]; ++i) {
+        const double *r = near1x_qext[i];
+        double x = r[0], dm = hypot(r[1] - 1, r[2]), tol, e, moved;
+        mist_mie_sphere s = mist_mie_sphere_new(x, mist_mie_cplx(r[1], r[2]));
+        tol = (1e-14 + 16 * DBL_EPSILON * sqrt(x) * (1 + dm * x)) * r[3];
+        e = fabs(s.q_ext - r[3]);
+        if (e / tol > worst) worst = e / tol;
+        mt_check(e <= tol, "near 1: x=%g m=%.17g+%gi Qext: %.17g vs %.17g (%.2e, tol %.2e)", x,
+                 r[1], r[2], s.q_ext, r[3], e, tol);
+        moved = r[3] * (1 + 10 * tol / r[3]);                   /* negative control */
+        mt_check(!(fabs(s.q_ext - moved) <= tol), "near 1 control: x=%g Qext accepted a moved "
+                 "reference", x);
+        mist_mie_sphere_free(&s);
+    }
+    if (verbose) printf("near 1: Q_ext worst %.2f of the tolerance\n", worst);
 }
 
 /* ======================================================================== */
