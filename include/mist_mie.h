@@ -569,6 +569,29 @@ MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__store(double *c, int n, mist_mie_comp
     c[5] = (fn + 1) / fn;
 }
 
+/* a_n, b_n for n > max(x, |m| x) from dmn = U_n (see the sphere): m D_n(mx)
+ * - D_n(x) = x U_n; D_n(mx)/m - D_n(x) = (x U_n - (mu - 1) D_n(x)) / mu.
+ * The denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}), as
+ * T psi_n - psi_{n-1} = num.  U_n, mu1 = mu - 1 and so num divided by sc
+ * (a power of 2; 1 but for a tiny m - 1). */
+MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__ab_u(mist_mie_complex dmn, double x, double dn,
+                                                double nx, mist_mie_complex mu1,
+                                                mist_mie_complex m2, double psi, double chi,
+                                                double chi1, double sc, mist_mie_complex *a,
+                                                mist_mie_complex *b)
+{
+    mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
+    qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
+    num = mist_mie__scale(qa, psi);
+    t = mist_mie_cplx(qa.re * sc + dn + nx, qa.im * sc);
+    *a = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                          num.im * sc - (t.re * chi - chi1)));
+    num = mist_mie__scale(dl, psi);
+    t = mist_mie_cplx(dl.re * sc + dn + nx, dl.im * sc);
+    *b = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                          num.im * sc - (t.re * chi - chi1)));
+}
+
 MIST_MIE_FUNC mist_mie_sphere mist_mie__zero(int status)
 {
     mist_mie_sphere s;
@@ -587,13 +610,13 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1, n2, near, es = 0;
+    int pec, nt, nw, n, n1, n2, near, es = 0, nlo = 1;
     double *coef, *dm, *dx;
     double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1, sc = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
     mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
-    mist_mie_complex d1 = mu1, k1 = mu1, k2 = mu1, pz0 = mu1, zi = mu1;
+    mist_mie_complex d1 = mu1, k1 = mu1, k2 = mu1, zi = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
@@ -777,7 +800,7 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         /* n < n2, m near 1: psi_n(mx) upward (stored in the coefficients'
          * slots 0, 1, psi_n(x) in 4), then E_n downward (slots 2, 3) from
          * E_n2 = psi_n2(mx) psi_n2(x) ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m */
-        mist_mie_complex p1, pn = mist_mie_cplx(0, 0), e = pn;
+        mist_mie_complex p1, pz0, pn = mist_mie_cplx(0, 0), e = pn;
         double ch = cosh(z.im), sh = sinh(z.im), sr = sin(z.re), cr = cos(z.re);
         double q0 = cosx, q1 = sinx, q = 0;
         int nh = n2 <= nt ? n2 : nt;
@@ -802,6 +825,51 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
             e = mist_mie__add(e, mist_mie__scale(mist_mie__mul(k1, pn), (2.0 * n + 1) * c[4]));
             c[2] = e.re; c[3] = e.im;
         }
+        /* a_n, b_n (slots 0-3) from pn = psi_n(mx), en = E_n, q = psi_n(x),
+         * q1 = psi_{n-1}(x), p1 = psi_{n-1}(mx) and chi_n upward as below */
+        q1 = sinx; p1 = pz0;
+        q0 = -sinx; q = cosx;                                /* chi_{-1}, chi_0 */
+        for (n = 1; n < n2; ++n) {
+            double *c = coef + 6 * (size_t)(n - 1), fn = n, chi, chd;
+            mist_mie_complex en = mist_mie_cplx(c[2], c[3]), pd, wa, wb, va, vb, t;
+            pn = mist_mie_cplx(c[0], c[1]);
+            chi = (2 * fn - 1) * ix * q - q0;
+            chd = q - fn * ix * chi;                             /* chi_n'(x) */
+            pd = mist_mie__sub(p1, mist_mie__mul(mist_mie__scale(pn, fn), zi));   /* psi_n'(mx) */
+            t = mist_mie__scale(pn, c[4]);                       /* psi_n(mx) psi_n(x) */
+            wb = mist_mie__sub(mist_mie__scale(mist_mie__mul(d1, p1), c[4]), en);
+            wa = mist_mie__sub(mist_mie__mul(k2, mist_mie__scale(t, fn)),
+                               mist_mie__add(en, mist_mie__scale(mist_mie__mul(d1, pn), q1)));
+            vb = mist_mie__sub(mist_mie__scale(mist_mie__mul(m, pd), chi),
+                               mist_mie__scale(pn, chd));
+            va = mist_mie__sub(mist_mie__scale(pd, chi),
+                               mist_mie__scale(mist_mie__mul(m, pn), chd));
+            q1 = c[4]; p1 = pn; q0 = q; q = chi;
+            wa = mist_mie__div(wa, mist_mie_cplx(wa.re * sc + va.im, wa.im * sc - va.re));
+            wb = mist_mie__div(wb, mist_mie_cplx(wb.re * sc + vb.im, wb.im * sc - vb.re));
+            c[0] = wa.re; c[1] = wa.im; c[2] = wb.re; c[3] = wb.im;
+        }
+        nlo = n2;
+    }
+    if (es && n2 <= nt) {
+        /* m - 1 scaled: the terms n >= n2 here (slots 0-3), psi_n(x) and
+         * chi_n as below; the main loop then sums stored terms only */
+        double p0 = cosx, p1 = sinx, c0 = -sinx, c1 = cosx;
+        for (n = 1; n <= nt; ++n) {
+            double fn = n, nx = fn * ix, psi, chi;
+            if (n < n1) psi = (2 * fn - 1) * ix * p1 - p0;
+            else        psi = p1 / (dx[n] + nx);
+            chi = (2 * fn - 1) * ix * c1 - c0;
+            if (n >= n2) {
+                double *c = coef + 6 * (size_t)(n - 1);
+                mist_mie_complex a, b;
+                mist_mie__ab_u(mist_mie_cplx(dm[2 * n], dm[2 * n + 1]), x, dx[n], nx, mu1, m2,
+                               psi, chi, c1, sc, &a, &b);
+                c[0] = a.re; c[1] = a.im; c[2] = b.re; c[3] = b.im;
+            }
+            p0 = p1; p1 = psi; c0 = c1; c1 = chi;
+        }
+        nlo = nt + 1;
     }
     psi0 = cosx; psi1 = sinx;                   /* psi_{-1}, psi_0 */
     chi0 = -sinx; chi1 = cosx;                  /* chi_{-1}, chi_0 */
@@ -813,42 +881,15 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         chi = (2 * fn - 1) * ix * chi1 - chi0;
         xin = mist_mie_cplx(psi, -chi);
         xim = mist_mie_cplx(psi1, -chi1);
-        if (!pec && !(near && n < n2)) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
-        if (near && n < n2) {
-            /* cross products: pn = psi_n(mx), en = E_n, psi = psi_n(x) */
+        if (n < nlo) {              /* stored above (cross products; m - 1 scaled) */
             const double *c = coef + 6 * (size_t)(n - 1);
-            mist_mie_complex pn = mist_mie_cplx(c[0], c[1]), en = mist_mie_cplx(c[2], c[3]);
-            mist_mie_complex pd, wa, wb, va, vb, t;
-            double chd = chi1 - nx * chi;                       /* chi_n'(x) */
-            pd = mist_mie__sub(pz0, mist_mie__mul(mist_mie__scale(pn, (double)n), zi));
-            t = mist_mie__scale(pn, psi);                       /* psi_n(mx) psi_n(x) */
-            wb = mist_mie__sub(mist_mie__scale(mist_mie__mul(d1, pz0), psi), en);
-            wa = mist_mie__sub(mist_mie__mul(k2, mist_mie__scale(t, (double)n)),
-                               mist_mie__add(en, mist_mie__scale(mist_mie__mul(d1, pn), psi1)));
-            vb = mist_mie__sub(mist_mie__scale(mist_mie__mul(m, pd), chi),
-                               mist_mie__scale(pn, chd));
-            va = mist_mie__sub(mist_mie__scale(pd, chi),
-                               mist_mie__scale(mist_mie__mul(m, pn), chd));
-            a = mist_mie__div(wa, mist_mie_cplx(wa.re * sc + va.im, wa.im * sc - va.re));
-            b = mist_mie__div(wb, mist_mie_cplx(wb.re * sc + vb.im, wb.im * sc - vb.re));
-            pz0 = pn;
+            a = mist_mie_cplx(c[0], c[1]);
+            b = mist_mie_cplx(c[2], c[3]);
         } else if (!pec && n >= n2) {
-            /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
-             * (x U_n - (mu - 1) D_n(x)) / mu.  The denominators T xi_n -
-             * xi_{n-1} = num - i (T chi_n - chi_{n-1}), as T psi_n -
-             * psi_{n-1} = num. */
-            mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
-            double dn = dx[n];
-            qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
-            num = mist_mie__scale(qa, psi);
-            t = mist_mie_cplx(qa.re * sc + dn + nx, qa.im * sc);
-            a = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
-                                                 num.im * sc - (t.re * chi - chi1)));
-            num = mist_mie__scale(dl, psi);
-            t = mist_mie_cplx(dl.re * sc + dn + nx, dl.im * sc);
-            b = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
-                                                 num.im * sc - (t.re * chi - chi1)));
+            mist_mie__ab_u(mist_mie_cplx(dm[2 * n], dm[2 * n + 1]), x, dx[n], nx, mu1, m2, psi,
+                           chi, chi1, 1.0, &a, &b);
         } else {
+        if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
         {   /* a_n */
             mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
             mist_mie_complex ta = mist_mie_cplx(qa.re + nx, qa.im), num, den;
@@ -893,19 +934,20 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
     s.n_terms = n < nt ? n : nt;
     s.q_sca = 2 * qsca * ix * ix;
-    s.q_ext = 2 * qext * ix * ix;
-    s.q_back = mist_mie__abs2(back) * ix * ix;
-    if (es) {                                   /* the coefficients / 2^es */
-        s.q_sca = ldexp(s.q_sca, 2 * es);
-        s.q_ext = ldexp(s.q_ext, es);
-        s.q_back = ldexp(s.q_back, 2 * es);
-        s.amp_scale_ = sc;
-    }
     if (pec || m.im == 0) {
         s.q_ext = s.q_sca;
         s.q_abs = 0;
     } else {
+        s.q_ext = 2 * qext * ix * ix;
         s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
+    }
+    s.q_back = mist_mie__abs2(back) * ix * ix;
+    if (es) {       /* the coefficients / 2^es (rounded only where the result is subnormal) */
+        s.q_sca = s.q_sca * sc * sc;
+        s.q_ext = m.im == 0 ? s.q_sca : s.q_ext * sc;
+        s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
+        s.q_back = s.q_back * sc * sc;
+        s.amp_scale_ = sc;
     }
     s.g = qsca > 0 ? 2 * gsum / qsca : 0;
     s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
