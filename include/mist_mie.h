@@ -797,9 +797,10 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
 
     sinx = sin(x); cosx = cos(x);
     if (near) {
-        /* n < n2, m near 1: psi_n(mx) upward (stored in the coefficients'
-         * slots 0, 1, psi_n(x) in 4), then E_n downward (slots 2, 3) from
-         * E_n2 = psi_n2(mx) psi_n2(x) ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m */
+        /* n < n2, m near 1 (see the sphere): psi_n(mx) = psi_{n-1}(mx) / r_n
+         * upward (in the coefficients' slots 0, 1; psi_n(x) in slot 4), then
+         * E_n downward (slots 2, 3) from E_n2 = psi_n2(mx) psi_n2(x)
+         * ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m (m - 1 divided by sc) */
         mist_mie_complex p1, pz0, pn = mist_mie_cplx(0, 0), e = pn;
         double ch = cosh(z.im), sh = sinh(z.im), sr = sin(z.re), cr = cos(z.re);
         double q0 = cosx, q1 = sinx, q = 0;
@@ -951,8 +952,8 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
     s.g = qsca > 0 ? 2 * gsum / qsca : 0;
     s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
-    if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal: |m-1| x^3
-                                                            below ~1e-154 (see the top) */
+    if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal (a guard:
+                                                            tiny m - 1 is scaled) */
     return s;
 }
 
