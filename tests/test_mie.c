@@ -5,9 +5,11 @@
  *   - Du (2004), Table 1 (Q_ext, Q_sca) and Table 2 (S1 at 0 and 180 deg);
  *   - Bohren & Huffman's Appendix A example (efficiencies and the S11, POL,
  *     S33, S34 table) and two further cases computed by miepython;
- *   - m close to 1 (small x, x to 20000, the dipole limit) against an
- *     mpmath series, with negative controls; S1(1) = S2(1), S2(-1) =
- *     -S1(-1) exactly; the dipole limit with a subnormal m - 1;
+ *   - m close to 1 (small x, x to 1e5 with m - 1 to 1e-12 and a subnormal
+ *     imaginary part, the dipole limit) against an mpmath series (Q_sca,
+ *     g, Q_back, S1, S2; Q_ext where it absorbs), with negative controls;
+ *     S1(1) = S2(1), S2(-1) = -S1(-1) exactly; the dipole limit with a
+ *     subnormal m - 1;
  *   - the small-particle limits; normalisation and mean cosine of the phase
  *     function by quadrature; no NaN or overflow up to x = 1e4 (and 1e5);
  *   - size-distribution averages against an independent trapezoid rule and
@@ -16,7 +18,8 @@
  *   - bad input gets the documented result;
  *   - the benchmark's workload (1800 angles x 3 wavelengths, one droplet of
  *     10 and 50 um) gives a valid average; its speed is the benchmark's.
- * Set MIST_VERBOSE=1 in the environment to print the worst deviations. */
+ * Set MIST_VERBOSE=1 in the environment to print the worst deviations (2:
+ * also every near-1 check). */
 #include "mist_mie.h"
 #include "mist_test.h"
 
