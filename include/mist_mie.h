@@ -66,22 +66,26 @@
  *   to x = 1000, 1e-10 at x = 1e4; an independent check of 372 random
  *   cases with |m - 1| > 0.01, x from 1e-6 to 5000: Q and g within 5e-12,
  *   p(mu) within 1.3e-10 (x = 5000).
- *   m close to 1 (test_near_one, 26 mpmath cases): for n > max(x, |m| x)
- *   the coefficients are computed with m^2 - 1 factored out (see the
- *   sphere), so at x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g
- *   itself) and S1, S2 are within 1e-13 relative whatever m - 1 (measured
- *   at most 1e-15).  At x |m| >= 1 the terms n <= |m| x lose 1/|m - 1| of
- *   their digits: Q_ext, Q_sca, g and S within 1e-15 / |m - 1| relative
- *   (measured at most 4e-16 / |m - 1|); and S1, S2 carry the rounding of
- *   their ~x terms, 2 eps x^(3/2) absolutely (a random walk of N terms up
- *   to 2n each), which is what Q_back = 4 |S1(-1)|^2 / x^2 and p(mu) near
- *   180 degrees show where they are small: Q_back within 4 eps sqrt(x /
- *   Q_back) + 1e-15 / |m - 1| relative (x = 8000, m = 1.0001, Q_back =
- *   9.8e-11: 1.4e-9 measured, 8e-9 that bound).  Where |m - 1| x^3 is so
- *   small that the coefficients' squares leave the range (below ~1e-154),
- *   the series' Q_sca, g and p are 0 (the dipole limit, x < 1e-8, scales
- *   its coefficients by powers of 2 and keeps p and g exact down to a
- *   subnormal m - 1).  At mu = +-1 the angle factors are exact integers:
+ *   m close to 1 (test_near_one, 57 mpmath cases, x to 1e5, m - 1 from
+ *   1e-3 to 1e-12 and i 1e-310, real, complex, below 1): every coefficient
+ *   is computed with m - 1 or m^2 - 1 a factor (see the sphere), so at
+ *   x |m| < 1 Q_ext, Q_sca, Q_back, g (relative to g itself) and S1, S2
+ *   are within 1e-13 relative whatever m - 1 (measured at most 1e-15); at
+ *   x |m| >= 1 and |m - 1| < 1e-3 Q_ext, Q_sca and g (relative to g) within
+ *   1e-14 + 16 eps sqrt(x) (1 + |m - 1| x) relative whatever m - 1
+ *   (measured: Q_sca 4.5e-13 at x = 1e5, g 3.4e-14), at |m - 1| >= 1e-3
+ *   within 1e-13 + 1e-15 / |m - 1|.  S1, S2 too, and they carry the
+ *   rounding of their ~x terms, 8 eps x^(3/2) min(1, sqrt(Q_sca))
+ *   absolutely (a random walk of N terms up to (2n+1)(|a_n| + |b_n|)/2:
+ *   S(0.5) within 5.1e-10 relative at x = 1e5), which is what Q_back =
+ *   4 |S1(-1)|^2 / x^2 and p(mu) near 180 degrees show where they are
+ *   small: Q_back within 32 eps sqrt(x min(1, Q_sca) / Q_back) more
+ *   (x = 8000, m = 1.0001, Q_back = 9.8e-11: 2.1e-9 measured; S1(-1)
+ *   1.8e-9 at x = 1e5, m = 1.0001).  m - 1 below 2^-64 is scaled by a
+ *   power of 2, so g, p and S keep their digits down to a subnormal m - 1
+ *   (Q_sca and Q_back are 0 only where they leave double's range; the
+ *   dipole limit, x < 1e-8, scales its coefficients the same way).
+ *   At mu = +-1 the angle factors are exact integers:
  *   S1(1) = S2(1) and S2(-1) = -S1(-1) bit for bit.  Near mu = +-1 at
  *   large x, p moves by ~x^2/2 times mu's rounding (an independent check:
  *   1.4e-10 at x = 1000, mu = -1 + 2^-53).  Cut at N
@@ -216,6 +220,7 @@ extern "C" {
 
 #define MIST_MIE__PI    3.14159265358979323846264338327950288
 #define MIST_MIE__X_TINY 1e-8   /* below: the dipole limit (see the sphere) */
+#define MIST_MIE__NEAR1 1e-3    /* |m - 1| below: cross products (the sphere) */
 
 /* ------------------------------------------------------------------------ */
 /* Types                                                                    */
@@ -483,7 +488,39 @@ MIST_MIE_FUNC mist_mie_complex mist_mie__ratio(int n, mist_mie_complex z)
 /* Every term carries the factor mu - 1: no cancellation, a few eps a term */
 /* whatever m - 1.  a_n's numerator is psi_n (x U_n - (mu - 1) D_n(x)) / mu,*/
 /* and the denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}). */
-/* Below n = max(x, |m| x) the loss of 1/|m - 1| remains (see ACCURACY).   */
+/* Below n2 = max(x, |m| x) + 1 the numerators T psi_n - psi_{n-1} are    */
+/* O(m - 1) of psi_{n-1}: they lose 1/|m - 1| of their digits (g 3.5e-9   */
+/* off at x = 1.5, m = 1 + 1e-7).  For |m - 1| < 1e-3 (MIST_MIE__NEAR1)   */
+/* a_n and b_n are written there with p_n = psi_n(mx), q_n = psi_n(x) in  */
+/* pole-free products (b_n's numerator and denominator times p_n, a_n's   */
+/* times m p_n; f_n' = f_{n-1} - n/z f_n):                                */
+/*   b_n = W_n / (W_n - i V_n),    W_n = m p_n' q_n - p_n q_n'            */
+/*                                     = (m - 1) p_{n-1} q_n - E_n,       */
+/*                                 V_n = m p_n' chi_n - p_n chi_n',       */
+/*   a_n = W'_n / (W'_n - i V'_n), W'_n = p_n' q_n - m p_n q_n'           */
+/*     = n (m^2 - 1)/(mx) p_n q_n - (m - 1) p_n q_{n-1} - E_n,            */
+/*                                 V'_n = p_n' chi_n - m p_n chi_n',      */
+/* where E_n = p_n q_{n-1} - p_{n-1} q_n (the Casoratian of the two       */
+/* recurrences) changes by  E_n - E_{n+1} = (2n+1) (m - 1)/(mx) p_n q_n   */
+/* and vanishes as n -> infinity: it is summed downward from              */
+/*   E_n2 = p_n2 q_n2 ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m.             */
+/* Every term carries m - 1 as a computed factor (never as the difference */
+/* of two O(1) numbers): nothing cancels, whatever m - 1.  And they are   */
+/* products of psi, not ratios: a difference of the D_n, whose poles sit  */
+/* at the zeros of psi_n, is not consistent there with an upward psi_n.   */
+/* p_n = p_{n-1} / r_n with the r_n = D_n(mx) + n/(mx) of the downward    */
+/* recurrence (the same numbers: consistent at p's zeros; upward, psi_n   */
+/* of a complex argument loses e^(2 Im mx) of itself).  For real m the    */
+/* terms of E's sum (~ q_k^2 as m -> 1) share a sign; in general they     */
+/* add to at most ~(1 + |m - 1| x) |E_n|.  A few eps a term, a random walk*/
+/* over the ~x terms: the coefficients, Q and g within ~eps sqrt(x) (1 +  */
+/* |m - 1| x) relative.  At |m - 1| >= 1e-3 the direct form above loses   */
+/* at most ~4e-16 / |m - 1| <= 4e-13 and is the faster (no products).     */
+/* |m - 1| < 2^-64: m - 1 is scaled by 2^-es to [1/2, 1) (exact, also for */
+/* a subnormal m - 1), the coefficients are computed divided by 2^es (the */
+/* denominators take num 2^es; T starts at its first order w (mu - 1)     */
+/* s^3, the difference of the s being noise there), and the efficiencies  */
+/* and amplitudes (amp_scale_ = 2^es) are scaled back.                    */
 /* The perfectly conducting sphere [W79 eqs. R/A.1-2]: T_a = n/x and       */
 /* b_n = psi_n / xi_n (the m -> infinity limit of the same formulas).       */
 /*                                                                          */
@@ -538,6 +575,29 @@ MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__store(double *c, int n, mist_mie_comp
     c[5] = (fn + 1) / fn;
 }
 
+/* a_n, b_n for n > max(x, |m| x) from dmn = U_n (see the sphere): m D_n(mx)
+ * - D_n(x) = x U_n; D_n(mx)/m - D_n(x) = (x U_n - (mu - 1) D_n(x)) / mu.
+ * The denominators T xi_n - xi_{n-1} = num - i (T chi_n - chi_{n-1}), as
+ * T psi_n - psi_{n-1} = num.  U_n, mu1 = mu - 1 and so num divided by sc
+ * (a power of 2; 1 but for a tiny m - 1). */
+MIST_MIE_FUNC MIST_MIE__HOT void mist_mie__ab_u(mist_mie_complex dmn, double x, double dn,
+                                                double nx, mist_mie_complex mu1,
+                                                mist_mie_complex m2, double psi, double chi,
+                                                double chi1, double sc, mist_mie_complex *a,
+                                                mist_mie_complex *b)
+{
+    mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
+    qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
+    num = mist_mie__scale(qa, psi);
+    t = mist_mie_cplx(qa.re * sc + dn + nx, qa.im * sc);
+    *a = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                          num.im * sc - (t.re * chi - chi1)));
+    num = mist_mie__scale(dl, psi);
+    t = mist_mie_cplx(dl.re * sc + dn + nx, dl.im * sc);
+    *b = mist_mie__div(num, mist_mie_cplx(num.re * sc + t.im * chi,
+                                          num.im * sc - (t.re * chi - chi1)));
+}
+
 MIST_MIE_FUNC mist_mie_sphere mist_mie__zero(int status)
 {
     mist_mie_sphere s;
@@ -556,12 +616,13 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
                                                    double *work, size_t n_work)
 {
     mist_mie_sphere s;
-    int pec, nt, nw, n, n1, n2;
+    int pec, nt, nw, n, n1, n2, near, es = 0, nlo = 1;
     double *coef, *dm, *dx;
-    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1;
+    double psi0, psi1, chi0, chi1, sinx, cosx, ix, am, fx = 1, sc = 1;
     double qext = 0, qsca = 0, gsum = 0, tmax = 0;
     mist_mie_complex back = mist_mie_cplx(0, 0), ap = back, bp = back;
     mist_mie_complex z, mu1 = mist_mie_cplx(0, 0), m2 = mu1, fz = mu1;
+    mist_mie_complex d1 = mu1, k1 = mu1, k2 = mu1, zi = mu1;
 
     if (!mist_mie__valid(x, m, &pec)) return mist_mie__zero(MIST_MIE_EDOMAIN);
     nt = mist_mie__cap(x);                      /* the most terms */
@@ -648,17 +709,46 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     dx = work + 8 * ((size_t)nt + 1);          /* D_n(x) for n > x          */
     ix = 1 / x;
     z = mist_mie__scale(m, x);
+    /* n > max(x, |m| x) from n2 on; below it, for m near 1, the cross
+     * products (see the sphere) and no D_n(mx) */
+    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
+    d1 = mist_mie_cplx(m.re - 1, m.im);
+    near = !pec && n2 > 1 && mist_mie__abs2(d1) < MIST_MIE__NEAR1 * MIST_MIE__NEAR1;
+    if (!pec) {
+        /* |m - 1| < 2^-64: m - 1 scaled by 2^-es to [1/2, 1) (exact, also
+         * for a subnormal m - 1) and the coefficients computed divided by
+         * sc = 2^es (see the sphere) */
+        double cm = fabs(d1.re) > fabs(d1.im) ? fabs(d1.re) : fabs(d1.im);
+        if (cm > 0 && cm < 5.42101086242752217e-20) {         /* 2^-64 */
+            (void)frexp(cm, &es);
+            d1 = mist_mie_cplx(ldexp(d1.re, -es), ldexp(d1.im, -es));
+            sc = ldexp(1.0, es);
+        }
+    }
     /* the fractions at nt + 1: psi_nt / psi_{nt+1} = 1 / (z s_nt(z)), and
      * D_nt(z) = (nt + 1)/z - z s_nt(z) (see the sphere) */
     if (!pec) {
-        mist_mie_complex d, zi = mist_mie__inv(z);
+        mist_mie_complex d;
+        zi = mist_mie__inv(z);
         fz = mist_mie__ratio(nt + 1, z);
         d = mist_mie__sub(mist_mie__scale(zi, nt + 1.0), mist_mie__inv(fz));
         dm[2 * nt] = d.re; dm[2 * nt + 1] = d.im;
-        for (n = nt; n > 1; --n) {
-            mist_mie_complex nz = mist_mie__scale(zi, (double)n);
-            d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
-            dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
+        if (!near) {
+            for (n = nt; n > 1; --n) {
+                mist_mie_complex nz = mist_mie__scale(zi, (double)n);
+                d = mist_mie__sub(nz, mist_mie__inv(mist_mie__add(d, nz)));
+                dm[2 * n - 2] = d.re; dm[2 * n - 1] = d.im;
+            }
+        } else {
+            /* only r_n = D_n(mx) + n/z = psi_{n-1}(mx) / psi_n(mx), in the
+             * coefficients' slots 0, 1 (psi_n(mx) = psi_{n-1}(mx) / r_n
+             * below: the same r_n as the recurrence, so consistent at the
+             * zeros of psi_n) */
+            for (n = nt; n >= 1; --n) {
+                mist_mie_complex nz = mist_mie__scale(zi, (double)n), r = mist_mie__add(d, nz);
+                coef[6 * (size_t)(n - 1)] = r.re; coef[6 * (size_t)(n - 1) + 1] = r.im;
+                d = mist_mie__sub(nz, mist_mie__inv(r));
+            }
         }
     }
     /* first n with n > x, in [1, nt + 1] whatever x (an integer bound on
@@ -678,17 +768,22 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
 
     /* n > max(x, |m| x): U_n = (m D_n(mx) - D_n(x)) / x, see above */
-    n2 = (int)mist_mie__clampl(floor(x * (am > 1 ? am : 1)), 0, nt) + 1;
     if (!pec && n2 <= nt) {
         mist_mie_complex zw = mist_mie__mul(z, z), smp, tp, u;
         double w = x * x, sxp = 1 / (x * fx);                     /* s_nt(x) */
         m2 = mist_mie__mul(m, m);
-        mu1 = mist_mie__mul(mist_mie_cplx(m.re - 1, m.im), mist_mie_cplx(m.re + 1, m.im));
+        mu1 = mist_mie__mul(d1, mist_mie_cplx(m.re + 1, m.im));      /* / sc */
         smp = mist_mie__inv(mist_mie__mul(z, fz));                  /* s_nt(mx) */
         /* the top term by the differences (it is past the tail; T's
-         * starting error shrinks by x^2 s s' a step below) */
-        tp = mist_mie_cplx(smp.re - sxp, smp.im);
-        u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+         * starting error shrinks by x^2 s s' a step below); scaled, by
+         * its first order x^2 (mu - 1) s^3 (the difference is noise) */
+        if (es == 0) {
+            tp = mist_mie_cplx(smp.re - sxp, smp.im);
+            u = mist_mie__sub(mist_mie_cplx(sxp, 0), mist_mie__mul(m2, smp));
+        } else {
+            tp = mist_mie__scale(mist_mie__mul(mu1, mist_mie__mul(smp, smp)), w * sxp);
+            u = mist_mie__sub(mist_mie__scale(mu1, -sxp), mist_mie__mul(m2, tp));
+        }
         dm[2 * nt] = u.re; dm[2 * nt + 1] = u.im;
         for (n = nt - 1; n >= n2; --n) {
             double an = 2.0 * n + 3, sx = 1 / (an - w * sxp);
@@ -707,6 +802,82 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
     }
 
     sinx = sin(x); cosx = cos(x);
+    if (near) {
+        /* n < n2, m near 1 (see the sphere): psi_n(mx) = psi_{n-1}(mx) / r_n
+         * upward (in the coefficients' slots 0, 1; psi_n(x) in slot 4), then
+         * E_n downward (slots 2, 3) from E_n2 = psi_n2(mx) psi_n2(x)
+         * ((m - 1)(D_n2(x) + n2/x) - x U_n2) / m (m - 1 divided by sc) */
+        mist_mie_complex p1, pz0, pn = mist_mie_cplx(0, 0), e = pn;
+        double ch = cosh(z.im), sh = sinh(z.im), sr = sin(z.re), cr = cos(z.re);
+        double q0 = cosx, q1 = sinx, q = 0;
+        int nh = n2 <= nt ? n2 : nt;
+        k1 = mist_mie__div(d1, mist_mie__scale(m, x));                 /* (m-1)/(mx) */
+        k2 = mist_mie__mul(k1, mist_mie_cplx(m.re + 1, m.im));       /* (m^2-1)/(mx) */
+        p1 = pz0 = mist_mie_cplx(sr * ch, cr * sh);                   /* sin z */
+        for (n = 1; n <= nh; ++n) {
+            double *c = coef + 6 * (size_t)(n - 1);
+            pn = mist_mie__div(p1, mist_mie_cplx(c[0], c[1]));
+            q = n < n1 ? (2.0 * n - 1) * ix * q1 - q0 : q1 / (dx[n] + n * ix);
+            c[0] = pn.re; c[1] = pn.im; c[4] = q;
+            p1 = pn; q0 = q1; q1 = q;
+        }
+        if (n2 <= nt) {
+            mist_mie_complex u = mist_mie_cplx(dm[2 * n2] * x, dm[2 * n2 + 1] * x);
+            e = mist_mie__sub(mist_mie__scale(d1, dx[n2] + n2 * ix), u);
+            e = mist_mie__div(mist_mie__scale(mist_mie__mul(pn, e), q), m);
+        }
+        for (n = n2 - 1; n >= 1; --n) {
+            double *c = coef + 6 * (size_t)(n - 1);
+            pn = mist_mie_cplx(c[0], c[1]);
+            e = mist_mie__add(e, mist_mie__scale(mist_mie__mul(k1, pn), (2.0 * n + 1) * c[4]));
+            c[2] = e.re; c[3] = e.im;
+        }
+        /* a_n, b_n (slots 0-3) from pn = psi_n(mx), en = E_n, q = psi_n(x),
+         * q1 = psi_{n-1}(x), p1 = psi_{n-1}(mx) and chi_n upward as below */
+        q1 = sinx; p1 = pz0;
+        q0 = -sinx; q = cosx;                                /* chi_{-1}, chi_0 */
+        for (n = 1; n < n2; ++n) {
+            double *c = coef + 6 * (size_t)(n - 1), fn = n, chi, chd;
+            mist_mie_complex en = mist_mie_cplx(c[2], c[3]), pd, wa, wb, va, vb, t;
+            pn = mist_mie_cplx(c[0], c[1]);
+            chi = (2 * fn - 1) * ix * q - q0;
+            chd = q - fn * ix * chi;                             /* chi_n'(x) */
+            pd = mist_mie__sub(p1, mist_mie__mul(mist_mie__scale(pn, fn), zi));   /* psi_n'(mx) */
+            t = mist_mie__scale(pn, c[4]);                       /* psi_n(mx) psi_n(x) */
+            wb = mist_mie__sub(mist_mie__scale(mist_mie__mul(d1, p1), c[4]), en);
+            wa = mist_mie__sub(mist_mie__mul(k2, mist_mie__scale(t, fn)),
+                               mist_mie__add(en, mist_mie__scale(mist_mie__mul(d1, pn), q1)));
+            vb = mist_mie__sub(mist_mie__scale(mist_mie__mul(m, pd), chi),
+                               mist_mie__scale(pn, chd));
+            va = mist_mie__sub(mist_mie__scale(pd, chi),
+                               mist_mie__scale(mist_mie__mul(m, pn), chd));
+            q1 = c[4]; p1 = pn; q0 = q; q = chi;
+            wa = mist_mie__div(wa, mist_mie_cplx(wa.re * sc + va.im, wa.im * sc - va.re));
+            wb = mist_mie__div(wb, mist_mie_cplx(wb.re * sc + vb.im, wb.im * sc - vb.re));
+            c[0] = wa.re; c[1] = wa.im; c[2] = wb.re; c[3] = wb.im;
+        }
+        nlo = n2;
+    }
+    if (es && n2 <= nt) {
+        /* m - 1 scaled: the terms n >= n2 here (slots 0-3), psi_n(x) and
+         * chi_n as below; the main loop then sums stored terms only */
+        double p0 = cosx, p1 = sinx, c0 = -sinx, c1 = cosx;
+        for (n = 1; n <= nt; ++n) {
+            double fn = n, nx = fn * ix, psi, chi;
+            if (n < n1) psi = (2 * fn - 1) * ix * p1 - p0;
+            else        psi = p1 / (dx[n] + nx);
+            chi = (2 * fn - 1) * ix * c1 - c0;
+            if (n >= n2) {
+                double *c = coef + 6 * (size_t)(n - 1);
+                mist_mie_complex a, b;
+                mist_mie__ab_u(mist_mie_cplx(dm[2 * n], dm[2 * n + 1]), x, dx[n], nx, mu1, m2,
+                               psi, chi, c1, sc, &a, &b);
+                c[0] = a.re; c[1] = a.im; c[2] = b.re; c[3] = b.im;
+            }
+            p0 = p1; p1 = psi; c0 = c1; c1 = chi;
+        }
+        nlo = nt + 1;
+    }
     psi0 = cosx; psi1 = sinx;                   /* psi_{-1}, psi_0 */
     chi0 = -sinx; chi1 = cosx;                  /* chi_{-1}, chi_0 */
     for (n = 1; n <= nt; ++n) {
@@ -717,24 +888,15 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         chi = (2 * fn - 1) * ix * chi1 - chi0;
         xin = mist_mie_cplx(psi, -chi);
         xim = mist_mie_cplx(psi1, -chi1);
-        if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
-        if (!pec && n >= n2) {
-            /* dmn = U_n: m D_n(mx) - D_n(x) = x U_n; D_n(mx)/m - D_n(x) =
-             * (x U_n - (mu - 1) D_n(x)) / mu.  The denominators T xi_n -
-             * xi_{n-1} = num - i (T chi_n - chi_{n-1}), as T psi_n -
-             * psi_{n-1} = num. */
-            mist_mie_complex dl = mist_mie__scale(dmn, x), qa, t, num;
-            double dn = dx[n];
-            qa = mist_mie__div(mist_mie__sub(dl, mist_mie__scale(mu1, dn)), m2);
-            num = mist_mie__scale(qa, psi);
-            t = mist_mie_cplx(qa.re + dn + nx, qa.im);
-            a = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
-                                                 num.im - (t.re * chi - chi1)));
-            num = mist_mie__scale(dl, psi);
-            t = mist_mie_cplx(dl.re + dn + nx, dl.im);
-            b = mist_mie__div(num, mist_mie_cplx(num.re + t.im * chi,
-                                                 num.im - (t.re * chi - chi1)));
+        if (n < nlo) {              /* stored above (cross products; m - 1 scaled) */
+            const double *c = coef + 6 * (size_t)(n - 1);
+            a = mist_mie_cplx(c[0], c[1]);
+            b = mist_mie_cplx(c[2], c[3]);
+        } else if (!pec && n >= n2) {
+            mist_mie__ab_u(mist_mie_cplx(dm[2 * n], dm[2 * n + 1]), x, dx[n], nx, mu1, m2, psi,
+                           chi, chi1, 1.0, &a, &b);
         } else {
+        if (!pec) dmn = mist_mie_cplx(dm[2 * n], dm[2 * n + 1]);
         {   /* a_n */
             mist_mie_complex qa = pec ? mist_mie_cplx(0, 0) : mist_mie__div(dmn, m);
             mist_mie_complex ta = mist_mie_cplx(qa.re + nx, qa.im), num, den;
@@ -787,10 +949,17 @@ MIST_MIE_FUNC mist_mie_sphere mist_mie_sphere_make(double x, mist_mie_complex m,
         s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
     }
     s.q_back = mist_mie__abs2(back) * ix * ix;
+    if (es) {       /* the coefficients / 2^es (rounded only where the result is subnormal) */
+        s.q_sca = s.q_sca * sc * sc;
+        s.q_ext = m.im == 0 ? s.q_sca : s.q_ext * sc;
+        s.q_abs = s.q_ext > s.q_sca ? s.q_ext - s.q_sca : 0;
+        s.q_back = s.q_back * sc * sc;
+        s.amp_scale_ = sc;
+    }
     s.g = qsca > 0 ? 2 * gsum / qsca : 0;
     s.p_norm_ = qsca > 0 ? 1 / (4 * MIST_MIE__PI * qsca) : 0;
-    if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal: |m-1| x^3
-                                                            below ~1e-154 (see the top) */
+    if (!(s.p_norm_ < (double)INFINITY)) s.p_norm_ = 0;  /* qsca subnormal (a guard:
+                                                            tiny m - 1 is scaled) */
     return s;
 }
 

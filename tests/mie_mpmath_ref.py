@@ -10,7 +10,10 @@ i mi, mi >= 0.  Prints a C table: x, mr, mi, Q_ext, Q_sca, g, Q_back,
 p(1), p(0), p(-1) (per steradian, normalised over the sphere).
 Run: python3 tests/mie_mpmath_ref.py   (mpmath; a few minutes).
      python3 tests/mie_mpmath_ref.py near1: test_near_one's table (m close
-     to 1: Q_sca, g, Q_back, S1 and S2 at mu = 0.5 and -1; about a minute)."""
+     to 1: Q_sca, g, Q_back, S1 and S2 at mu = 0.5 and -1; about a minute).
+     python3 tests/mie_mpmath_ref.py near1x: test_near_one's second table
+     (the same at x |m| >= 1; a few minutes); near1x_ext: Q_ext of its
+     absorbing cases."""
 import math
 import mpmath as mp
 
@@ -143,11 +146,53 @@ NEAR1 = [
     (1e-9, 1.0, 1e-300), (2e-9, 1.0000000000000002, 0.0),
 ]
 
-def main_near1():
-    for x, mr, mi in NEAR1:
+# m close to 1 at x |m| >= 1 (test_near_one, near1x_ref): the terms n <= |m| x,
+# x = 1.5 to 1e5 and m - 1 from 9e-4 down to 1e-12, some with an
+# imaginary part, some below 1, two purely imaginary, three with m - 1 far
+# below double's range for the efficiencies (Q_sca, Q_back print 0 there;
+# g and the amplitudes stay meaningful).
+NEAR1X = [
+    (1.5, 1.00001, 0.0), (1.5, 1.0000001, 5e-8), (1.5, 1.000000001, 0.0),
+    (1.5, 1.000000000001, 1e-12),
+    (10.0, 1.00001, 1e-6), (10.0, 1.0000001, 0.0), (10.0, 1.000000001, 3e-10),
+    (10.0, 1.000000000001, 0.0), (10.0, 1.0, 1e-10),
+    (100.0, 1.00001, 0.0), (100.0, 1.0000001, 1e-8), (100.0, 1.000000001, 0.0),
+    (100.0, 1.000000000001, 5e-13),
+    (1000.0, 1.00001, 2e-6), (1000.0, 1.0000001, 0.0), (1000.0, 1.000000001, 1e-9),
+    (1000.0, 1.000000000001, 0.0), (1000.0, 1.0, 1e-14),
+    (8000.0, 1.00001, 1e-7), (8000.0, 1.0000001, 0.0), (8000.0, 1.000000001, 0.0),
+    (8000.0, 1.000000000001, 1e-12),
+    (10.0, 1.0, 1e-200), (1.5, 1.0, 1e-310), (0.01, 1.0, 1e-200),
+    (1.5, 0.99999999, 0.0), (100.0, 0.9999999, 0.0), (8000.0, 0.99999, 1e-6),
+    (100000.0, 1.000000001, 0.0), (100000.0, 1.0001, 1e-7), (100000.0, 1.0009, 0.0),
+]
+
+def main_near1(cases):
+    for x, mr, mi in cases:
         v = reference_near1(x, mr, mi, (0.5, -1))
         print('    {%s, %s, %s,\n     %s},' % (repr(x), repr(mr), repr(mi),
               ',\n     '.join(mp.nstr(t, 20, min_fixed=1, max_fixed=0) for t in v)), flush=True)
 
+def main_near1x_ext():
+    """Q_ext of NEAR1X's absorbing cases (x, mr, mi, Q_ext)."""
+    for x, mr, mi in NEAR1X:
+        if mi == 0 or mi < 1e-100:
+            continue
+        n_max = int(x + 4 * x ** (1.0 / 3) + 40)
+        lo = min(x, math.hypot(mr, mi) * x)
+        loss = sum(2 * math.log10((k + 1.0) / lo) for k in range(1, n_max + 1) if k + 1 > lo)
+        res = []
+        for extra in (0, 25):
+            mp.mp.dps = int(40 + loss + max(0, -math.log10(abs(complex(mr, mi) - 1))) + extra)
+            xx, m = mp.mpf(x), mp.mpc(mr, mi)
+            res.append(quantities(xx, *series(xx, m, n_max))[0])
+        assert abs(res[0] - res[1]) < 1e-25 * abs(res[1])
+        print('    {%s, %s, %s, %s},' % (repr(x), repr(mr), repr(mi),
+              mp.nstr(res[1], 20, min_fixed=1, max_fixed=0)), flush=True)
+
 if __name__ == '__main__' and len(__import__('sys').argv) > 1:
-    main_near1()
+    mode = __import__('sys').argv[1]
+    if mode == 'near1x_ext':
+        main_near1x_ext()
+    else:
+        main_near1(NEAR1X if mode == 'near1x' else NEAR1)

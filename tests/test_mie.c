@@ -5,9 +5,11 @@
  *   - Du (2004), Table 1 (Q_ext, Q_sca) and Table 2 (S1 at 0 and 180 deg);
  *   - Bohren & Huffman's Appendix A example (efficiencies and the S11, POL,
  *     S33, S34 table) and two further cases computed by miepython;
- *   - m close to 1 (small x, x to 20000, the dipole limit) against an
- *     mpmath series, with negative controls; S1(1) = S2(1), S2(-1) =
- *     -S1(-1) exactly; the dipole limit with a subnormal m - 1;
+ *   - m close to 1 (small x, x to 1e5 with m - 1 to 1e-12 and a subnormal
+ *     imaginary part, the dipole limit) against an mpmath series (Q_sca,
+ *     g, Q_back, S1, S2; Q_ext where it absorbs), with negative controls;
+ *     S1(1) = S2(1), S2(-1) = -S1(-1) exactly; the dipole limit with a
+ *     subnormal m - 1;
  *   - the small-particle limits; normalisation and mean cosine of the phase
  *     function by quadrature; no NaN or overflow up to x = 1e4 (and 1e5);
  *   - size-distribution averages against an independent trapezoid rule and
@@ -16,7 +18,8 @@
  *   - bad input gets the documented result;
  *   - the benchmark's workload (1800 angles x 3 wavelengths, one droplet of
  *     10 and 50 um) gives a valid average; its speed is the benchmark's.
- * Set MIST_VERBOSE=1 in the environment to print the worst deviations. */
+ * Set MIST_VERBOSE=1 in the environment to print the worst deviations (2:
+ * also every near-1 check). */
 #include "mist_mie.h"
 #include "mist_test.h"
 
@@ -162,24 +165,27 @@ static void test_series_tail(void)
 /* at 40 digits plus those its recurrences and m - 1 cost, checked with 25  */
 /* more).  Values below double's range are written 0.                       */
 /* Where n > max(x, |m| x) the coefficients come from recurrences with      */
-/* (m^2 - 1) factored out (mist_mie.h, the sphere): at x |m| < 1 that is    */
-/* every term, and Q, g and S are within a few eps whatever m - 1 (the      */
-/* dipole limit, x |m| < 1e-8, adds g's leading term 0.16 x^2, exact to    */
-/* O(x^2 |m|^2) relative).  Tolerance 1e-13 relative there (measured at     */
-/* most 1e-15; the cancelling numerator had given g 3.1e-7 off at m =       */
-/* 1.0001, x = 0.003, 0.6 at x = 1e-7).  At x |m| >= 1 the terms n <=      */
-/* |m| x still lose 1/|m - 1| of their digits: Q_sca, g and S within       */
-/* 1e-15 / |m - 1| relative (measured at most 4e-16 / |m - 1|: g at x =    */
-/* 1.5, m = 1 + 1e-7).  The amplitudes also carry the rounding of their N  */
-/* ~ x terms, each up to (2n+1)/2 |a_n - b_n| <= 2n: a random walk of       */
-/* eps sqrt(sum 4 n^2) = 1.2 eps x^(3/2) absolutely, tolerance 2 eps        */
-/* x^(3/2) (measured at most 0.49 of it: S(-1) at x = 8000, m = 1.001).    */
-/* Q_back = 4 |S1(-1)|^2 / x^2 is tiny for m near 1 (the sum cancels), so   */
-/* that absolute error is 2 |dS| / |S1(-1)| = 4 eps sqrt(x / Q_back) of it  */
-/* relative, far above 1e-15 / |m - 1|: 1.4e-9 at x = 8000, m = 1.0001     */
-/* (Q_back = 9.8e-11), where 4 eps sqrt(x / Q_back) is 8e-9.  Every check  */
-/* is also made with the reference moved by 10 tolerances: it must fail    */
-/* (negative control).                                                      */
+/* (m^2 - 1) factored out, below it (|m - 1| < 1e-3) from the cross         */
+/* products W_n, V_n with m - 1 factored out (mist_mie.h, the sphere).  At  */
+/* x |m| < 1 that is every term, and Q, g and S are within a few eps        */
+/* whatever m - 1 (the dipole limit, x |m| < 1e-8, adds g's leading term    */
+/* 0.16 x^2, exact to O(x^2 |m|^2) relative): tolerance 1e-13 relative      */
+/* (measured at most 1e-15).  At x |m| >= 1, E_n's downward sum rounds a    */
+/* few eps a term over ~x terms whose moduli add to at most ~(1 + |m - 1|   */
+/* x) |E_n|: tolerance 1e-14 + 16 eps sqrt(x) (1 + |m - 1| x) relative for  */
+/* Q_sca and g (measured at most 0.40 of it: Q_sca 4.5e-13 at x = 1e5, m =  */
+/* 1 + 1e-9; g at most 3.4e-14); above |m - 1| = 1e-3 the direct form's     */
+/* 1e-13 + 1e-15 / |m - 1|.  The amplitudes also carry the rounding of      */
+/* their N ~ x terms, each up to (2n+1)/2 (|a_n| + |b_n|), whose squares    */
+/* add to at most ~x^3 min(1, Q_sca) ((2n+1)(|a_n|^2 + |b_n|^2) sums to     */
+/* x^2 Q_sca / 2): a random walk of ~eps x^(3/2) min(1, sqrt(Q_sca))        */
+/* absolutely, tolerance 8 eps x^(3/2) min(1, sqrt(Q_sca)) (measured at     */
+/* most 0.62 of it: S1(0.5) at x = 1e5, m = 1.0009).  Q_back = 4 |S1(-1)|^2 */
+/* / x^2 is tiny for m near 1 (the sum cancels), so that absolute error is  */
+/* 2 |dS| / |S1(-1)| = 32 eps sqrt(x min(1, Q_sca) / Q_back) of it relative */
+/* (2.1e-9 at x = 8000, m = 1.0001, Q_back = 9.8e-11, 0.36 of the           */
+/* tolerance at most).  Every check is also made with the reference moved   */
+/* by 10 tolerances: it must fail (negative control).                       */
 /* ======================================================================== */
 static const double near1_ref[][14] = {
         {0.003, 1.0001, 0.0,
@@ -288,6 +294,156 @@ static const double near1_ref[][14] = {
          9.3494625803971797399e-85, -1.1842378929335004853e-42, -9.3494625803971797399e-85, 1.1842378929335004853e-42},
 };
 
+/* x |m| >= 1, the terms n < |m| x (tests/mie_mpmath_ref.py near1x printed */
+/* these as near1_ref's, 20 digits; x from 1.5 to 1e5, m - 1 from 9e-4 to    */
+/* 1e-12, some with an imaginary part or below 1, two purely imaginary and   */
+/* three below double's range for Q_sca and Q_back (0 there; g and the      */
+/* amplitudes stay meaningful)).  Tolerances: near1_table.                  */
+static const double near1x_ref[][14] = {
+        {1.5, 1.00001, 0.0,
+         2.7063371327092471088e-10, 3.7674355110134275934e-1, 1.0754344442110755361e-10,
+         1.4494628755452883716e-10, -1.7827835042907291992e-5, 7.5159173991632038765e-11, -8.9139487756685674812e-6,
+         1.2364025113673403944e-10, -7.7777366548107095963e-6, -1.2364025113673403944e-10, 7.7777366548107095963e-6},
+        {1.5, 1.0000001, 5e-08,
+         3.3829031072042670443e-14, 3.7674211924210711838e-1, 1.3442952687779809733e-14,
+         8.913893441737792216e-8, -1.7827782628219114311e-7, 4.4569470535520082757e-8, -8.913891521654827745e-8,
+         3.8888727287431526101e-8, -7.777742459634364618e-8, -3.8888727287431526101e-8, 7.777742459634364618e-8},
+        {1.5, 1.000000001, 0.0,
+         2.7063230271410340394e-18, 3.7674209295864259085e-1, 1.0754365823455857987e-18,
+         1.4494559413867366021e-18, -1.7827785162263649956e-9, 7.5158686567951033894e-19, -8.9138925842572144573e-10,
+         1.2363985191134953517e-18, -7.777744387477593174e-10, -1.2363985191134953517e-18, 7.777744387477593174e-10},
+        {1.5, 1.000000000001, 1e-12,
+         5.413126364371047726e-24, 3.7674209281319809996e-1, 2.1510640314927201839e-24,
+         1.7827783682060276872e-12, -1.7829368582372194368e-12, 8.9138918410363898173e-13, -8.914684291185560514e-13,
+         7.7777437446515932635e-13, -7.778435190576477507e-13, -7.7777437446515932635e-13, 7.778435190576477507e-13},
+        {10.0, 1.00001, 1e-06,
+         1.9594015819031046849e-8, 9.7146723857649550932e-1, 1.3254355339640245791e-11,
+         1.5709320941888251256e-5, -1.5692478377953586436e-4, 7.8579626857773413003e-6, -7.8465345097706720901e-5,
+         -1.8153235538385375472e-6, 1.811252284707696834e-5, 1.8153235538385375472e-6, -1.811252284707696834e-5},
+        {10.0, 1.0000001, 0.0,
+         1.9400118600998041518e-12, 9.7146719491917134686e-1, 1.3135777672985137059e-15,
+         1.7246969826034143618e-12, -1.5693382662652098505e-6, 1.1248697002792761127e-12, -7.8466948449928684701e-7,
+         -4.8651728102265296767e-13, 1.8121656707438794097e-7, 4.8651728102265296767e-13, -1.8121656707438794097e-7},
+        {10.0, 1.000000001, 3e-10,
+         2.1146130058202364054e-16, 9.7146719508599563083e-1, 1.4318129853539703105e-19,
+         4.7080166306350824628e-9, -1.5693389502818378903e-8, 2.3540083602889326769e-9, -7.8466947676323337979e-9,
+         -5.4365219322858379036e-10, 1.8121740413610046989e-9, 5.4365219322858379036e-10, -1.8121740413610046989e-9},
+        {10.0, 1.000000000001, 0.0,
+         1.9403565963674306749e-22, 9.714671950699118087e-1, 1.3138234053336155603e-25,
+         1.7250039194862093478e-22, -1.5694783511057322253e-11, 1.1250692689433030296e-22, -7.8473917555638040537e-12,
+         -4.8660514010986560337e-23, 1.8123350996253531978e-12, 4.8660514010986560337e-23, -1.8123350996253531978e-12},
+        {10.0, 1.0, 1e-10,
+         1.9400116415641408621e-18, 9.7146719507577654289e-1, 1.313589830216418487e-21,
+         1.5693388342503337477e-9, -5.706247438144098021e-19, 7.8466941686264624331e-10, 6.6054421589099521773e-20,
+         -1.8121739915198667667e-10, 8.3266882631850736756e-19, 1.8121739915198667667e-10, -8.3266882631850736756e-19},
+        {100.0, 1.00001, 0.0,
+         1.9989563102428743145e-6, 9.9949308421845795719e-1, 2.4329537834417051498e-11,
+         -1.8161981528115599199e-6, 1.7358637772154567677e-3, -9.2066452105763182633e-7, 8.6796519765518178488e-4,
+         -4.6017845108703985807e-7, 2.4662447733717710583e-4, 4.6017845108703985807e-7, -2.4662447733717710583e-4},
+        {100.0, 1.0000001, 1e-08,
+         2.0189224170018900938e-10, 9.9949310235027632519e-1, 2.4405768361004059058e-15,
+         -1.7349667456751212549e-6, 1.7347723235704467561e-5, -8.6748527155015822839e-7, 8.673864666031643338e-6,
+         -2.4583944165951306279e-7, 2.4578456133727263948e-6, 2.4583944165951306279e-7, -2.4578456133727263948e-6},
+        {100.0, 1.000000001, 0.0,
+         1.9989364109236371385e-14, 9.994931026639712428e-1, 2.4162570044926352375e-19,
+         -1.81492007732692356e-14, 1.7347653109853214375e-7, -9.1990952688766340136e-15, 8.6738265882316592887e-8,
+         -4.5853190337159374133e-15, 2.457771859068977509e-8, 4.5853190337159374133e-15, -2.457771859068977509e-8},
+        {100.0, 1.000000000001, 5e-13,
+         2.4990255263516723833e-20, 9.9949310266579598308e-1, 3.0207483045745805102e-25,
+         -8.673825289449951867e-11, 1.7349192789224414849e-10, -4.3369126447676232601e-11, 8.6745963946247415498e-11,
+         -1.2288854049249920452e-11, 2.4579893048991872317e-11, 1.2288854049249920452e-11, -2.4579893048991872317e-11},
+        {1000.0, 1.00001, 2e-06,
+         2.0733157752255122735e-4, 9.9999261909320278368e-1, 1.5401931051744543176e-11,
+         -2.2862272153172204097e-3, 1.1025780933710873328e-2, -1.1434640664198041891e-3, 5.5125026641700058975e-3,
+         4.4254544519680684842e-4, -1.9117103054259282358e-3, -4.4254544519680684842e-4, 1.9117103054259282358e-3},
+        {1000.0, 1.0000001, 0.0,
+         1.9999849568138533054e-8, 9.9999262884175850502e-1, 1.3550501996527220901e-15,
+         -1.1331141842356104206e-8, 1.122937786072607521e-4, -5.7112343764040787193e-9, 5.6146868542750797211e-5,
+         3.7917462980689309026e-9, -1.8405502860173110022e-5, -3.7917462980689309026e-9, 1.8405502860173110022e-5},
+        {1000.0, 1.000000001, 1e-09,
+         3.9999634494939198961e-12, 9.9999262884907370575e-1, 2.7073861367737724443e-19,
+         -1.1231010615670160458e-6, 1.1231022198696342988e-6, -5.6155052663276209164e-7, 5.6155110080201113017e-7,
+         1.839641394595562612e-7, -1.8396154166632015391e-7, -1.839641394595562612e-7, 1.8396154166632015391e-7},
+        {1000.0, 1.000000000001, 0.0,
+         2.0003403727300021932e-18, 9.9999262885339745542e-1, 1.3539255947583946902e-25,
+         -1.1334824699619523571e-18, 1.1232042364686905312e-9, -5.7130845725028006686e-19, 5.6160211823226952996e-10,
+         3.7905702198102992727e-19, -1.839786397084179637e-10, -3.7905702198102992727e-19, 1.839786397084179637e-10},
+        {1000.0, 1.0, 1e-14,
+         1.9999847572702836579e-22, 9.9999262885339752958e-1, 1.3536848836011734467e-29,
+         -1.1231043934890091661e-11, 1.6659671497027883722e-22, -5.6155219674445891894e-12, 8.3505894145698088468e-23,
+         1.8396228442272980256e-12, 9.275190436538052052e-23, -1.8396228442272980256e-12, -9.275190436538052052e-23},
+        {8000.0, 1.00001, 1e-07,
+         1.276686333584051019e-2, 9.9999985195318229135e-1, 9.9493425466333640025e-11,
+         3.2889840846899509586e-4, -2.2767910389976816967e-3, 1.6099840801651657875e-4, -1.1362076630720402831e-3,
+         6.7608857497763534773e-3, -3.9321561913787316837e-2, -6.7608857497763534773e-3, 3.9321561913787316837e-2},
+        {8000.0, 1.0000001, 0.0,
+         1.2799997537005439954e-6, 9.999998523319991941e-1, 9.8325621270905207647e-15,
+         -8.3282313743671008811e-8, 1.0355634720425475332e-4, -4.1950765403070552231e-8, 5.1778437051779103547e-5,
+         6.3630650112350588187e-7, -3.9663659582479900085e-4, -6.3630650112350588187e-7, 3.9663659582479900085e-4},
+        {8000.0, 1.000000001, 0.0,
+         1.2800000190655506389e-10, 9.9999985233280311232e-1, 9.8285759899881224439e-19,
+         -8.4292633587888313331e-12, 1.0481988186067150576e-6, -4.245557900039411702e-12, 5.2409943568335105195e-7,
+         6.3618176900577938036e-11, -3.9655669934996336509e-6, -6.3618176900577938036e-11, 3.9655669934996336509e-6},
+        {8000.0, 1.000000000001, 1e-12,
+         2.5602271747757327737e-16, 9.9999985233281011539e-1, 1.9658814721189570905e-24,
+         -1.0483260988342869261e-9, 1.0484195340383732786e-9, -5.2416304946953274891e-10, 5.2420976695695170682e-10,
+         3.9655585060047427722e-9, -3.9659109028515436294e-9, -3.9655585060047427722e-9, 3.9659109028515436294e-9},
+        {10.0, 1.0, 1e-200,
+         0.0, 9.714671950699133162e-1, 0.0,
+         1.5693388359750309137e-199, 0.0, 7.8466941798751545687e-200, 0.0,
+         -1.8121739963850529843e-200, 0.0, 1.8121739963850529843e-200, 0.0},
+        {1.5, 1.0, 1e-310,
+         0.0, 3.7674209281281532845e-1, 0.0,
+         1.7827783682049946851e-310, 0.0, 8.9138918410249734256e-311, 0.0,
+         7.7777437446529852233e-311, 0.0, -7.7777437446529852233e-311, 0.0},
+        {0.01, 1.0, 1e-200,
+         0.0, 1.6000091426737014468e-5, 0.0,
+         6.6666000002380950942e-207, 0.0, 3.3333000001190475471e-207, 0.0,
+         6.6664000038094958879e-207, 0.0, -6.6664000038094958879e-207, 0.0},
+        {1.5, 0.99999999, 0.0,
+         2.7063225904834213839e-16, 3.7674209135454283539e-1, 1.075436417345381622e-16,
+         1.4494557082037148941e-16, 1.7827783720268202246e-8, 7.5158674336039591465e-17, 8.9138918288802115451e-9,
+         1.2363983223214080995e-16, 7.7777437908224838201e-9, -1.2363983223214080995e-16, -7.7777437908224838201e-9},
+        {100.0, 0.9999999, 0.0,
+         1.9989358691536906537e-10, 9.9949310284911109679e-1, 2.4160881526470580481e-15,
+         -1.8149068503415212549e-10, -1.7347540510385102604e-5, -9.199017403566759115e-11, -8.673766924692053646e-6,
+         -4.585151839723861123e-11, -2.4576859806564555047e-6, 4.585151839723861123e-11, 2.4576859806564555047e-6},
+        {8000.0, 0.99999, 1e-06,
+         1.2745547262725844193e-2, 9.9999985129571769545e-1, 8.9843218406235143735e-11,
+         -5.3783111243968073822e-3, -2.25302999852307156e-2, -2.6912245270276578831e-3, -1.1261713401778164483e-2,
+         9.5796799774270099445e-3, 3.6684073193006339628e-2, -9.5796799774270099445e-3, -3.6684073193006339628e-2},
+        {100000.0, 1.000000001, 0.0,
+         2.0000003260725363343e-8, 9.9999999880235620293e-1, 9.9492353152147803062e-19,
+         1.9988603280236549354e-8, -1.9987296366067915617e-4, 9.994619132201008226e-9, -9.9936482306248616021e-5,
+         -9.9788621497764051666e-9, 4.9872925813771997633e-5, 9.9788621497764051666e-9, -4.9872925813771997633e-5},
+        {100000.0, 1.0001, 1e-07,
+         1.8009960584896837717, 9.9999986454962302892e-1, 2.3605247414297904832e-9,
+         9.155785112290800163, -1.4320745798715778897e+1, 4.5787668556357208345, -7.1586979112234231491,
+         -2.1855134904740894069, 1.0605859873344728098, 2.1855134904740894069, -1.0605859873344728098},
+        {100000.0, 1.0009, 0.0,
+         2.0188990130323932136, 9.9998427899858061514e-1, 5.5211209752015346581e-7,
+         1.4868313872126834978e+1, 1.063804939615116587e+2, 4.2391379832319387421e+1, 1.13469903595531141e+2,
+         -3.1064759410609119373e+1, 2.0377952953163765289e+1, 3.1064759410609119373e+1, -2.0377952953163765289e+1},
+};
+
+/* Q_ext of near1x_ref's absorbing cases (tests/mie_mpmath_ref.py           */
+/* near1x_ext, the same series; x, mr, mi, Q_ext).  Tolerance as Q_sca's.    */
+static const double near1x_qext[][4] = {
+    {1.5, 1.0000001, 5e-08, 2.000000339126620879e-7},
+    {1.5, 1.000000000001, 1e-12, 4.0000000000027236919e-12},
+    {10.0, 1.00001, 1e-06, 2.6686342959142142871e-5},
+    {10.0, 1.000000001, 3e-10, 8.0000001906495190959e-9},
+    {10.0, 1.0, 1e-10, 2.6666666647266551202e-9},
+    {100.0, 1.0000001, 1e-08, 2.6668650880874107918e-6},
+    {100.0, 1.000000000001, 5e-13, 1.3333333334859245282e-10},
+    {1000.0, 1.00001, 2e-06, 5.5248053294930764168e-3},
+    {1000.0, 1.000000001, 1e-09, 2.6666666719919106192e-6},
+    {1000.0, 1.0, 1e-14, 2.6666666666466668159e-11},
+    {8000.0, 1.00001, 1e-07, 1.4897681461974249293e-2},
+    {8000.0, 1.000000000001, 1e-12, 2.1333333333398755529e-8},
+    {8000.0, 0.99999, 1e-06, 3.3824629170938338732e-2},
+};
+
 /* |got - ref| <= tol (complex: the modulus), measured in units of sc > 0
  * (so no square underflows, also where -ffast-math makes hypot naive) */
 static int near1_check(const double *got, const double *ref, int cplx, double tol, double sc)
@@ -297,21 +453,30 @@ static int near1_check(const double *got, const double *ref, int cplx, double to
     return d <= tol / sc && got[0] == got[0];
 }
 
-static void test_near_one(void)
+/* One table of near1_ref's layout (label: the messages' prefix).  Tolerances
+ * (relative to the reference; see above): x max(|m|, 1) < 1: 1e-13; else,
+ * |m - 1| < 1e-3 (cross products): 1e-14 + 16 eps sqrt(x) (1 + |m - 1| x);
+ * |m - 1| >= 1e-3: 1e-13 + 1e-15 / |m - 1|; and the amplitudes add the
+ * rounding of their angle sums, 8 eps x^(3/2) min(1, sqrt(Q_sca)), which
+ * Q_back = 4 |S1(-1)|^2 / x^2 carries as 32 eps sqrt(x min(1, Q_sca) /
+ * Q_back) of itself. */
+static void near1_table(const double (*ref)[14], size_t count, const char *label)
 {
     static const char *name[7] = { "Qsca", "g", "Qback", "S1(.5)", "S2(.5)", "S1(-1)", "S2(-1)" };
-    const double sum_abs = 2 * DBL_EPSILON;     /* |dS| <= 2 eps x^(3/2), see above */
     size_t i;
     int k, controls = 0;
-    double worst = 0;
-    for (i = 0; i < sizeof near1_ref / sizeof near1_ref[0]; ++i) {
-        const double *r = near1_ref[i];
+    double worst[7] = {0, 0, 0, 0, 0, 0, 0};
+    for (i = 0; i < count; ++i) {
+        const double *r = ref[i];
         double x = r[0], dm = hypot(r[1] - 1, r[2]), am = hypot(r[1], r[2]);
         int inner = x * (am > 1 ? am : 1) < 1;
+        double rel = inner ? 1e-13 : dm < 1e-3 ? 1e-14 + 16 * DBL_EPSILON * sqrt(x) * (1 + dm * x)
+                                              : 1e-13 + 1e-15 / dm;
+        double sabs = inner ? 0 : 8 * DBL_EPSILON * x * sqrt(x * (r[3] < 1 ? r[3] : 1));
         mist_mie_sphere s = mist_mie_sphere_new(x, mist_mie_cplx(r[1], r[2]));
         mist_mie_complex a, b, c, d;
         double got[11], tol[7], e;
-        mt_check(s.status == MIST_MIE_OK, "near 1: x=%g m=%.17g+%gi status %d", x, r[1], r[2],
+        mt_check(s.status == MIST_MIE_OK, "%s: x=%g m=%.17g+%gi status %d", label, x, r[1], r[2],
                  s.status);
         mist_mie_amplitudes(&s, 0.5, &a, &b);
         mist_mie_amplitudes(&s, -1, &c, &d);
@@ -322,33 +487,61 @@ static void test_near_one(void)
             const double *rk = r + 3 + (k < 3 ? k : 3 + 2 * (k - 3));
             int cx = k >= 3;
             double ar = cx ? hypot(rk[0], rk[1]) : fabs(rk[0]);
-            if (inner) tol[k] = 1e-13 * ar;
-            else if (k < 2) tol[k] = (1e-13 + 1e-15 / dm) * ar;
-            else if (k == 2)
-                tol[k] = (1e-13 + 1e-15 / dm + 4 * sum_abs * sqrt(x) / sqrt(rk[0])) * ar;
-            else tol[k] = (1e-13 + 1e-15 / dm) * ar + sum_abs * x * sqrt(x);
+            tol[k] = rel * ar;
+            if (k == 2 && rk[0] > 0) tol[k] += 4 * sabs / (x * sqrt(rk[0])) * ar;
+            if (k >= 3) tol[k] += sabs;
             tol[k] += 2e-323;                      /* (values past double's range) */
             {
                 const double *gk = got + (k < 3 ? k : 3 + 2 * (k - 3));
                 double moved[2];
                 e = cx ? hypot(gk[0] - rk[0], gk[1] - rk[1]) : fabs(gk[0] - rk[0]);
-                if (e / tol[k] > worst) worst = e / tol[k];
+                if (e / tol[k] > worst[k]) worst[k] = e / tol[k];
+                if (verbose > 1)
+                    printf("  %s x=%g m-1=%.3g%+.3gi %s: %.2e relative, %.3f of the tolerance\n",
+                           label, x, r[1] - 1, r[2], name[k], ar > 0 ? e / ar : e, e / tol[k]);
                 mt_check(near1_check(gk, rk, cx, tol[k], ar > 0 ? ar : 1),
-                         "near 1: x=%g m=%.17g+%gi %s: %.17g vs %.17g (%.2e, tol %.2e)", x,
+                         "%s: x=%g m=%.17g+%gi %s: %.17g vs %.17g (%.2e, tol %.2e)", label, x,
                          r[1], r[2], name[k], gk[0], rk[0], e, tol[k]);
                 if (ar > 0) {                          /* negative control */
                     double f = 1 + 10 * tol[k] / ar;   /* 10 tolerances out */
                     moved[0] = rk[0] * f;
                     moved[1] = cx ? rk[1] * f : 0;
                     mt_check(!near1_check(gk, moved, cx, tol[k], ar),
-                             "near 1 control: x=%g %s accepted a moved reference", x, name[k]);
+                             "%s control: x=%g %s accepted a moved reference", label, x, name[k]);
                     ++controls;
                 }
             }
         }
         mist_mie_sphere_free(&s);
     }
-    if (verbose) printf("near 1: worst %.2f of the tolerance, %d controls\n", worst, controls);
+    if (verbose) {
+        printf("%s: worst of the tolerance", label);
+        for (k = 0; k < 7; ++k) printf(" %s %.2f", name[k], worst[k]);
+        printf("; %d controls\n", controls);
+    }
+}
+
+static void test_near_one(void)
+{
+    size_t i;
+    double worst = 0;
+    near1_table(near1_ref, sizeof near1_ref / sizeof near1_ref[0], "near 1");
+    near1_table(near1x_ref, sizeof near1x_ref / sizeof near1x_ref[0], "near 1, x |m| >= 1");
+    for (i = 0; i < sizeof near1x_qext / sizeof near1x_qext[0]; ++i) {
+        const double *r = near1x_qext[i];
+        double x = r[0], dm = hypot(r[1] - 1, r[2]), tol, e, moved;
+        mist_mie_sphere s = mist_mie_sphere_new(x, mist_mie_cplx(r[1], r[2]));
+        tol = (1e-14 + 16 * DBL_EPSILON * sqrt(x) * (1 + dm * x)) * r[3];
+        e = fabs(s.q_ext - r[3]);
+        if (e / tol > worst) worst = e / tol;
+        mt_check(e <= tol, "near 1: x=%g m=%.17g+%gi Qext: %.17g vs %.17g (%.2e, tol %.2e)", x,
+                 r[1], r[2], s.q_ext, r[3], e, tol);
+        moved = r[3] * (1 + 10 * tol / r[3]);                   /* negative control */
+        mt_check(!(fabs(s.q_ext - moved) <= tol), "near 1 control: x=%g Qext accepted a moved "
+                 "reference", x);
+        mist_mie_sphere_free(&s);
+    }
+    if (verbose) printf("near 1: Q_ext worst %.2f of the tolerance\n", worst);
 }
 
 /* ======================================================================== */
@@ -1986,7 +2179,7 @@ int main(void)
 {
     const char *v = getenv("MIST_VERBOSE");
     clock_t t0 = clock();
-    verbose = v && *v && *v != '0';
+    verbose = v && *v && *v != '0' ? (*v == '2' ? 2 : 1) : 0;   /* 2: every near-1 check */
     test_wiscombe();
     test_series_tail();
     test_near_one();
