@@ -1364,7 +1364,7 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
 /* decided by the residual's signs.  bench/mist_worst.c: the worst call of  */
 /* an adversarial grid (|g| to 1 - 2^-53, alpha 1e-300 to +inf) 3-8x the   */
 /* median random call in every build measured, gcc 12 and clang 14, with    */
-/* and without long double and fma (was 19-110x).                           */
+/* and without long double and fma (Newton in u alone: up to 110x).       */
 /* A prepared phase function (mist_phase_draine) starts from its table      */
 /* instead of eq. 6, and in float usually ends after one straight-line      */
 /* Newton step (mist__draine_step; see "Prepared phase functions").         */
