@@ -131,11 +131,10 @@ static inline qreal ref_cdf_err(qreal g)
  * the root of the computed CDF.  A
  * step that would leave the bracket is retried from the bracket's ends
  * (the tangent at an end; at -1 and 1, where F is 0 and 1 exactly, never
- * evaluated), then bisects.  (Until 2026-12-01 the test was a step below
- * 1e-30 only, taken after the bracket: a step rounded onto u, or F's noise
- * at small |g| above 1e-30 f, bisected down to 1e-30, and a start at -1 or
- * 1 restarted from 0: 14 iterations a call on average in test_accuracy,
- * now 5; the same roots to within 0.22% of the double bar over its 185083
+ * evaluated), then bisects.  (A test of the step alone, below 1e-30, would
+ * bisect down to 1e-30 wherever a step rounds onto u or F's noise at small
+ * |g| exceeds 1e-30 f: 14 iterations a call on average in test_accuracy,
+ * against 5; the same roots to within 0.22% of the double bar over its 185083
  * calls, the largest differences at |g| within 2^-50 of 1 and xi near
  * 1e-17, where both are at the printed form's own rounding: F ~ xi
  * computed from terms of order 1, 1e-33 apart, over a density ~1e-16.  The
@@ -229,14 +228,14 @@ static inline double ref_bar_q(double g, qreal a, qreal xi, double xt, double u,
  * bar's xi term (4 eps xi du/dxi = 2^-51 xi / f(u*), double's eps) where
  * f is about f(u*); where f ~ k u^2 near u = 0 (alpha -> inf), |r| =
  * k |u^3 - u*^3| / 3 keeps |u - u*| within 4 |r| / f(u*) (the ratio
- * 3 u*^2 / (u^2 + u u* + u*^2) is largest, 4, at u = -0.5 u*: an independent
- * review, 2026-12-02, found 3.998 2^-16 there), 4 2^-16 of that term, and
+ * 3 u*^2 / (u^2 + u u* + u*^2) is largest, 4, at u = -0.5 u*: 3.998 2^-16
+ * measured there), 4 2^-16 of that term, and
  * 3.2 2^-16 from the samplers' own answers as starts (~5e6 random starts
  * over the whole domain).  There Newton converges only linearly (by
  * 2/3 a step) and ref_sample_from bisects down to 1e-30: test_huge_alpha's
  * 6864 roots took 1.8 s of test_accuracy's 3 in the O3 variant, 0.9 s
- * with this stop, every printed figure the same (2026-12-02; test_reference
- * checks the stop against the full inverse there, with a control).  Where
+ * with this stop, every printed figure the same (test_reference checks the
+ * stop against the full inverse there, with a control).  Where
  * F's own rounding (ref_cdf_err) exceeds 2^-67 xi (xi below ~1e-13, or |g|
  * small in the printed form) the stop can fire inside F's noise: the root
  * is then as uncertain as the full inverse's is there anyway, by F's

@@ -1,11 +1,11 @@
-# robustness.cmake - the robustness tests (issue 6), included by
+# robustness.cmake - the robustness tests, included by
 # CMakeLists.txt when MIST_ROBUSTNESS is ON:
 #
 #   stress               tests/test_stress.c: every public function over its
 #                        whole domain and beyond, 1.07e8 calls (~9 s of CPU
 #                        at -O3; MIST_STRESS_CALLS in the environment scales
-#                        it: 1e10 is the long run, ~14 minutes at the 83 ns
-#                        a call of 2026-12-02)
+#                        it: 1e10 is the long run, ~14 minutes at ~80 ns a
+#                        call)
 #   fuzz_replay_<h>      the kept fuzz corpus fuzz/corpus/<h>/ through the
 #                        harness fuzz/fuzz_<h>.c, built as a plain program
 #   fuzz_<h>             the harness under clang's libFuzzer + ASan + UBSan
@@ -21,14 +21,12 @@
 # and compile tests of these sources under gcc and clang, as CMakeLists.txt
 # does for the others.
 option(MIST_VARIANTS "Test sub-builds of mist under sanitizers and other compiler flags" ON)
-# 3 s a harness (10 until 2026-12-01, then 5: CI's time; 10 s ran ~17000
-# inputs of fuzz_phase and ~19000 of fuzz_hfog under ASan here, a one-off
-# count; in CI these runs are a smoke test of the harnesses and the
-# sanitizer build: the long runs of fuzz/README.md are where fuzzing finds
-# things)
+# 3 s a harness: in CI these runs are a smoke test of the harnesses and the
+# sanitizer build (10 s runs ~17000 inputs of fuzz_phase under ASan); the
+# long runs of fuzz/README.md are where fuzzing finds things
 set(MIST_FUZZ_SECONDS 3 CACHE STRING "Seconds each libFuzzer test runs")
-# -O0 since 2026-12-02 (-O1 before; the long runs of fuzz/README.md keep
-# -O1): the build is most of such a short test, fuzz_hfog's 6.6 s at -O1
+# -O0 (the long runs of fuzz/README.md take -O1): the build is most of such
+# a short test, fuzz_hfog's 6.6 s at -O1
 # against 1.8 s at -O0, fuzz_phase's 4.5 against 1.4 (clang 14); at -O0 the
 # 3 s run half the inputs (5147 against 10101 for fuzz_hfog, the kept
 # corpus included, measured), and ASan + UBSan see the code unoptimised.
@@ -61,7 +59,7 @@ if(MIST_FUZZ_SECONDS GREATER 0)
                      ${MIST_FUZZ_SECONDS} ${MIST_FUZZ_OPT})
     # COST: started among the long tests, not last (with no cost ctest ran
     # them after everything else, and fuzz_hfog, 12 s with its build, was
-    # the suite's tail: one core idle for ~10 s, 2026-12-01)
+    # the suite's tail: one core idle for ~10 s)
     set_tests_properties(fuzz_${h} PROPERTIES SKIP_RETURN_CODE 77 COST 30)
   endforeach()
 endif()
@@ -81,18 +79,11 @@ endforeach()
 
 # Variants: this tree rebuilt with other flags, running its tests.
 #
-# Issue 6: "the whole test suite also runs under ASan/UBSan, -ffast-math,
-# -O0, -O3, and without FMA contraction".  CI runs the README's test
-# command on 2 cores and should take under 5 minutes, so the default list
-# is three variants that, with the main build, cover the five.  The
-# variants are most of the suite's CPU time: 355 s of CPU for the three
-# (ctest -R '^variant_' -j2, perf stat's task-clock, 2026-12-01's AMD EPYC
-# VM) before this session's cuts, 269 s after them (MIST_VARIANT_QUICK
-# 4 -> 8; no *_native builds in asan and O3; CI had reported 287 s and
-# 353 s for the whole .ci/run; then 333 s: the next session cut the tests'
-# float128 reference inverse to a third of its iterations and the
-# variants' largest Mie cases, asan alone 121 -> 104 s of CPU, then asan's
-# batch test, 7.8 s more, and the live fuzzing 5 -> 3 s).  asan is the
+# The whole test suite also runs under ASan/UBSan, -ffast-math, -O0, -O3,
+# and without FMA contraction.  The README's test command runs on 2 cores
+# within a few minutes, so the default list is three variants that, with
+# the main build, cover the five; they are most of the suite's CPU time
+# (~270 s of CPU for the three, ctest -R '^variant_' -j2).  asan is the
 # longest job:
 #   asan      -O0 -g, AddressSanitizer + UndefinedBehaviorSanitizer: the
 #             sanitizer variant and the -O0 variant.  Every test (but the
@@ -101,7 +92,7 @@ endforeach()
 #             accuracy_nold is the double samplers without long double here;
 #             accuracy_nold_native and batch_native had taken 31 and 21 s
 #             of the 123 s its tests ran in, and -march=native slowed
-#             ASan's quadrature 5x, see below; and batch, since 2026-12-01:
+#             ASan's quadrature 5x, see below; and batch:
 #             batch_nold walks the same blocks, remainders and arrays, the
 #             batch forms' indexing, which is what ASan checks there, and
 #             the stress run calls the batch forms of this configuration;
@@ -111,8 +102,8 @@ endforeach()
 #             their stack blocks, and of n = 0 and n >= 1024 (in quick
 #             mode for mist_draine_sample_n and mist_phase_sample_n, the
 #             batch forms whose code depends on n there: test_batch.c),
-#             which the stress run's batches (n 1 to 80) do not reach: an
-#             independent review, 2026-12-02), with
+#             which the stress run's batches (n 1 to 80) do not reach),
+#             with
 #             MIST_TEST_QUICK=MIST_VARIANT_QUICK (8): accuracy, chi2 and
 #             height_fog draw an eighth of their random points and samples,
 #             but never below each count's floor (mt_scale's lo: chi2 keeps
@@ -147,8 +138,7 @@ endforeach()
 #             build's accuracy_nold runs the same Dekker path without
 #             contraction, which there is none to do; it is still built:
 #             same_samples compares its
-#             fingerprint; 3.1 s of the 16 s of CPU O3's tests took,
-#             2026-12-02, Intel Xeon VM).  batch_nold stays: with
+#             fingerprint; 3.1 s of the 16 s of CPU O3's tests took).  batch_nold stays: with
 #             -fno-math-errno (MIST_BENCH_FLAGS) it is O3's only build of
 #             the vectorised kernels, and the only one anywhere under
 #             contraction.

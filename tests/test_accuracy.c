@@ -12,7 +12,7 @@
  *
  * Also: monotonicity in xi (sorted random xi and runs of adjacent floats),
  * and the Dirac limits |g| = 1; alpha from 1e4 to DBL_MAX and +inf with
- * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0) (issue 2); the
+ * |g| <= 1e-3 at xi within a few ulps of 1/2 and of F(0); the
  * prepared double sampler at alpha from 1e300 to DBL_MAX and +inf
  * (test_top_alpha); the inputs where the solver crept (test_crawl_points);
  * and all of it
@@ -75,10 +75,8 @@ static void ref_params(int kind, double g, double a, double *rg, qreal *ra)
  * ARM64 and in CUDA device code) the double Draine samplers finish in
  * double-double (products by Dekker's splitting, resp. by fma) instead of
  * long double: the same bar, monotone; HG and Rayleigh are double-double
- * in every build.  (Until the fifth session of
- * 2026-11-27 the build without fma ran them in double, documented within
- * 2x the bar for Draine and not monotone; an independent check measured
- * 3.1x near u = 0.)  Float is the same in every build. */
+ * in every build (double alone would miss the bar by up to 3.1x near
+ * u = 0 and not be monotone).  Float is the same in every build. */
 
 static double worst_d = 0, worst_f = 0;
 static long n_points = 0;
@@ -110,7 +108,7 @@ static int check_point(int kind, double g, double a, double xi)
     return ok;
 }
 
-/* The grid of the issue: g, alpha and the named xi, plus random xi
+/* The grid: g, alpha and the named xi, plus random xi
  * (uniform, and crowded towards both ends, where the tails are). */
 static const double grid_g[] = { 0, 1e-7, -1e-7, 1e-4, -1e-4, 1e-2, -1e-2, 0.3,
                                  -0.3, 0.9, -0.9, 0.999, -0.999 };
@@ -334,12 +332,9 @@ static void test_rayleigh_ends(void)
  * ~2^-100): (a) 40000 random (g, xi), |g| in [0.25, 0.99], either sign:
  * correctly rounded but for at most 2 (0 measured); (b) near u = 0, xi =
  * F(0) + k 2^-30 (|k| <= 2000, 16 values of g): the error over half an ulp
- * of u* within double-double's floor, 2^-100 (2^-104.6 measured).  A
- * mutation audit in the eighth session of 2026-11-27 found a change no
- * test saw: the double-double form without one product's low part (0.6%
- * of samples for g < 0 misrounded); (a) and (b) fail on it.  (Until the
- * ninth session of 2026-11-27 the default x86 build ran three forms in
- * long double: (a) allowed 1% there, 0.1% measured, and (b) 2^-61.) */
+ * of u* within double-double's floor, 2^-100 (2^-104.6 measured).  The
+ * double-double form without one product's low part (0.6% of samples for
+ * g < 0 misrounded) fails (a) and (b). */
 static qreal hg_inv(double g, double xi)
 {
     qreal G = g, t = (1 - G * G) / (1 - G + 2 * G * (qreal)xi);
@@ -385,9 +380,8 @@ static void test_hg_rounding(void)
  * (a) 40000 random xi, a quarter of them crowded to 0 and a quarter to 1
  * (xi^6), and of (b) 40001 adjacent-ish xi = 1/2 + k 2^-54 near u = 0
  * (|k| <= 20000, u ~ k 1.5e-16); 0 measured.  (Solved for v = 1 + u in
- * long double, before the eighth session of 2026-11-27, u near 0 kept only
- * v's ulp, 5e-20 absolute: 34886 of (b) not the rounded root, and u(1/2) =
- * -2^-64; in long double, until the ninth, ~0.03% of (a) were an ulp off.) */
+ * long double alone, u near 0 keeps only v's ulp, 5e-20 absolute: 34886 of
+ * (b) would not be the rounded root, and u(1/2) = -2^-64.) */
 static qreal ray_root(double xi)
 {
     qreal q = 8 * (qreal)xi - 4, u = q / 3, un;
@@ -430,9 +424,7 @@ static void test_rayleigh_rounding(void)
  * test_accuracy, test_accuracy_nold (Dekker's product, no long double) and
  * test_accuracy_nold_native (fma) by tests/same_samples.sh (ctest
  * same_samples).  MIST_FINGERPRINT=2 flips the last sample's lowest bit:
- * the script's control, which must differ.  (Until the ninth session of
- * 2026-11-27 test_accuracy's build ran these samplers in long double: its
- * fingerprint differed.) */
+ * the script's control, which must differ. */
 static unsigned long long fingerprint(int flip)
 {
     mt_rng r = { 0x4650 };
@@ -473,7 +465,7 @@ static unsigned long long fingerprint(int flip)
     return h;
 }
 
-/* Issue 2: alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
+/* alpha -> inf with |g| tiny.  The density is ~(c0 + u^2) HG with
  * c0 = 1/alpha -> 0: near u = 0 the CDF has an (almost) triple point, and
  * a solver that judged convergence by the density at its iterate stopped
  * far from the root (-0.0208 for -0.00366 at g = 0, alpha = 2^20, xi =
@@ -990,7 +982,7 @@ static void test_reference(void)
 }
 
 /* The reported failures themselves (independent float128 values). */
-static void test_issue2_points(void)
+static void test_named_points(void)
 {
     check_point(KIND_DRAINE, 0, 0x1p20, 0x1.fffffep-2);
     check_point(KIND_DRAINE, 0, 0x1p40, 0x1.fffffffffffffp-2);
@@ -1015,7 +1007,7 @@ int main(void)
     test_reference();
     for (kind = KIND_HG; kind <= KIND_RAYLEIGH; ++kind)
         test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(150, 10) : mt_scale(400, 20)));
-    test_issue2_points();
+    test_named_points();
     test_huge_alpha();
     test_near_one();
     test_crawl_points();

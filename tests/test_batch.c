@@ -22,10 +22,10 @@
  * the lengths above 100 only where the code depends on n beyond blocks of
  * 32: mist_draine_sample_n (MIST_DRAINE_PREPARE_N, mist__draine_vn) and
  * mist_phase_sample_n (the float form's queue of pending elements, flushed
- * when 32 are pending: an independent review, 2026-12-02, counted 466
- * mid-loop flushes at n > 100, none at n <= 100); for the others 100
- * already spans three blocks of 32 and a remainder (under ASan at -O0 the
- * long lengths took most of batch_nold's 9.9 s of CPU; 5.5 s now).
+ * when 32 are pending: 466 mid-loop flushes at n > 100, none at n <= 100,
+ * counted); for the others 100 already spans three blocks of 32 and a
+ * remainder (under ASan at -O0 the long lengths would take most of
+ * batch_nold's time).
  * Built twice by CMake: with the project's
  * flags and with -march=native -fno-math-errno (so that the vectorised
  * code is what is compared).  The comparison is by bits (a -0 for a +0 or

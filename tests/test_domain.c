@@ -446,8 +446,8 @@ static void test_prepared(void)
             }
     {   /* a fog with tiny w_d and a Draine lobe near the Dirac limit: the
          * lobe's density at u = -1 is normal although w_d times its
-         * normalisation underflows (until the eighth session of 2026-11-27
-         * the prepared density was 0 there, and the pdf of a sample 0).
+         * normalisation underflows (taken in that order, the prepared
+         * density would be 0 there, and the pdf of a sample 0).
          * Reference: the closed form w (1 - g^2) / (4 pi cn V^3) (1 + a u^2),
          * V = 1 + g at u = -1, g_hg = 1 adding 0 there, divided before w
          * multiplies (no underflow in double); bar 8 eps relative: a few

@@ -68,8 +68,8 @@ static void jump(mist_fog a, mist_fog b, double *l1, double *dlog)
  * by up to 0.02), an order below the smallest margin (logRMS at d = 20:
  * 0.166 against 0.198); half the Mie work, which is most of this test's
  * time under ASan at -O0.  Quick mode also leaves out d = 50 (the same code
- * as d = 20 with 2.5x the terms: under ASan at -O0, quick 8, this test took
- * 10.9 -> 6.0 s of CPU, measured 2026-12-01); the main build runs all four. */
+ * as d = 20 with 2.5x the terms: under ASan at -O0, quick 8, 0.55x this
+ * test's time); the main build runs all four. */
 static void test_reading(void)
 {
     static const double ds[] = { 5, 10, 20, 50 };

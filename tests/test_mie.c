@@ -73,8 +73,8 @@ static mist_mie_complex conj_c(mist_mie_complex z) { return mist_mie_cplx(z.re, 
 /* ~1e-11): the resonant part, 1.5e-2 of Q_back, changes by 2/1e-9 per unit */
 /* of relative x: 3e7 x 4 eps ~ 3e-8, tolerance 1e-7 (measured 6.3e-10); m  */
 /* = 30, 1e-10 from its peak, where Q is all resonance: 2e10 x 4 eps ~      */
-/* 2e-5, tolerance 1e-4 (measured 4e-8).  The header before the sixth       */
-/* session of 2026-11-27 fails 67 of these 91 checks.                       */
+/* 2e-5, tolerance 1e-4 (measured 4e-8).  A series cut at Wiscombe's N     */
+/* fails 67 of these 91 checks.                                             */
 /* ======================================================================== */
 static void test_series_tail(void)
 {
@@ -1316,7 +1316,7 @@ static void test_quadrature(void)
         int n;
         /* quick mode (MIST_TEST_QUICK, the variants) leaves out x = 1e4:
          * 1e4 nodes times 1e4 terms: test_mie under ASan at -O0, quick 8,
-         * 11.7 -> 6.3 s of CPU (measured 2026-12-01); test_large still takes
+         * about half its time; test_large still takes
          * x = 1e4 and 1e5 there, and the main build this case */
         if (mt_quick() > 1 && cs[i][0] > 1000) continue;
         s = mist_mie_sphere_new(cs[i][0], m);
@@ -2154,8 +2154,7 @@ static void test_sweep(void)
  * and an asymmetry in a loose band, 0.8-0.9, around the ~0.86 of large
  * water droplets in visible light (a sanity band: the Mie values
  * themselves are tested above against published ones).  Its speed
- * is the benchmark's to measure (issue 3: "measure it in the benchmarks"),
- * not this test's: a time bound here was removed. */
+ * is the benchmark's to measure, not this test's. */
 static void test_bench_workload(void)
 {
     static const double dia[2] = {10, 50};

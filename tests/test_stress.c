@@ -21,9 +21,8 @@
  *   MIST_STRESS_CALLS=N  the number of library calls to aim for (default
  *                        9e7: 1.07e8 made, the 1e8 the suite wants from
  *                        this test alone; 8.9 s of CPU at -O3 (CMake
- *                        Release), gcc 12, an idle 2-core Intel Xeon VM,
- *                        2026-12-02, against 11.8 s for the 1.39e8 of the
- *                        earlier default, 1.2e8).  The edge grids always run in full
+ *                        Release), gcc 12, an idle 2-core Intel Xeon
+ *                        VM).  The edge grids always run in full
  *                        (about 1.3e7 calls); the dense grids and the random
  *                        draws scale with N (a dense grid capped by its
  *                        arrays owes the rest of its share to the random
@@ -640,7 +639,7 @@ static void ST_F(st_hfog)(double share)
 {
 #if !MI_FAST
     /* (subnormal vertical cosines and scale heights of either type, and
-     * FLT_MAX, DBL_MAX: issue 6's edge cases (d) and (a); DBL_MAX is +inf,
+     * FLT_MAX, DBL_MAX; DBL_MAX is +inf,
      * a uniform fog, in float) */
     static const double ws[] = { 0, 1e-300, -1e-300, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3,
                                  0.5, -0.5, 1, -1, 1e-320, -1e-320, 1e-45, -1e-45 };

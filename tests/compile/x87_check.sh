@@ -5,8 +5,7 @@
 # math (-msse2 -mfpmath=sse: FLT_EVAL_METHOD 0), it must compile.  Exits 77
 # (ctest: skipped) where gcc cannot build 32-bit code against the C
 # library headers mist.h includes (no multilib: gcc's own <float.h> alone
-# compiles with only libc6-i386 installed, <math.h> then does not, which
-# failed this test on a fresh machine of 2026-12-01).
+# compiles with only libc6-i386 installed, <math.h> then does not).
 inc=$1; dir=$2; out=$3
 printf '%s\n' '#include <math.h>' '#include <float.h>' '#include <stddef.h>' \
     '#include <stdint.h>' '#include <string.h>' \
