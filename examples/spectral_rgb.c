@@ -14,7 +14,7 @@
  *
  * Build and run (from the repository root):
  *   cc -std=c99 -O2 -Iinclude -Itests examples/spectral_rgb.c -o spectral_rgb -lm
- *   ./spectral_rgb        (about a minute: 84 size averages per diameter) */
+ *   ./spectral_rgb        (about 20 s: 84 size averages per diameter) */
 #include "mist.h"
 #include "mist_mie.h"
 #include "mist_fitref.h"
