@@ -427,8 +427,8 @@ typedef struct mist_phasef {
     int      channels;                                                         \
     size_t   n;                 /* nodes; n - 1 cells, n - 1 guide buckets */  \
     size_t   klo, khi;          /* first and last cell of positive mass */     \
-    size_t   o_mu, o_f, o_F, o_q, o_kc, o_gx, o_gm; /* the arrays' byte       \
-                                   offsets from the table's start */            \
+    size_t   o_mu, o_f, o_F, o_q, o_kc, o_gx, o_gm, o_ih; /* the arrays'      \
+                                   byte offsets from the table's start */       \
     double   tot[2];            /* the sampling density's integral, hi + lo */ \
     double   norm;              /* 1 / (2 pi tot) */
 typedef struct mist_tab  { MIST__TAB_FIELDS } mist_tab;
@@ -3422,9 +3422,6 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 #endif /* !MIST_NO_FOG */
 
 #endif /* !MIST_NO_BATCH */
-#undef MIST__BLOCKS
-#undef MIST__BLOCKS_FB
-#undef MIST__BLK
 #undef MIST__DRAINE_V
 
 #ifndef MIST_NO_TAB
@@ -3486,12 +3483,20 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
 /*   peak spread over buckets); the cell lies between a bucket's entry and  */
 /*   the next one's, found by bisection there.  Expected cells per lookup   */
 /*   for uniform xi: <= 1 + (n-1)/(n-1) = 2; worst case one bucket holding  */
-/*   m cells, log2(m) steps (never more than log2(n)).  Measured            */
-/*   (bench/mist_bench.c, float, HG .9 at n nodes uniform in theta): a      */
-/*   sample 8.2 ns at n = 64, 9.5 at 16382 (a binary search over the same   */
-/*   table: 0.6x at 64, 2.7x at 1024, 6x at 16382 the time), eval 6.2-6.9   */
-/*   ns (3.1-3.5x mist_hg_evalf).                                           */
-/*   Memory: mist_tab_bytes(n, C) = (40 + 8 C) n + 8 C + ~112 bytes.        */
+/*   m cells, log2(m) steps (never more than log2(n)).                      */
+/*   Float eval: the bucket over u from v in float, without branches, and   */
+/*   one step: u in [mu_lo, mu_lo+2) (lo the bucket's entry) gives the cell */
+/*   lo or lo + 1 by one comparison (verified against mu, so exact; else    */
+/*   the search above: 0.5-0.7% of uniform u, HG .9 at 64 to 16382 nodes   */
+/*   uniform in theta); the weights by the cell's stored 1/h (no division): */
+/*   the value within ~6 eps (double) of the interpolant, rounded to float  */
+/*   once (the double eval: two divisions, its weights exactly 1 and 0 at   */
+/*   the nodes).  The float batch forms run these steps (and the sampler's  */
+/*   bucket, one step and both root forms, selected) in blocks of 32 as     */
+/*   passes without branches that gcc vectorises (gathers; clang 14 all but */
+/*   the bucket pass); the elements off the fast path are redone by the     */
+/*   scalar function.  Costs: bench/mist_bench.c (./mist_bench tab).        */
+/*   Memory: mist_tab_bytes(n, C) = (48 + 8 C) n + 8 C + ~120 bytes.        */
 /* DOMAIN AND BAD INPUT: mist_tab_init checks everything before it writes   */
 /* the arrays and writes nothing past `bytes`; on an error (MIST_TAB_E*,    */
 /* negative) it marks a header that fits in `bytes` as failed.  A table     */
@@ -3524,21 +3529,23 @@ MIST__F const uint32_t *MIST__FN(mist__tab_g)(const MIST__TAB *t, size_t off)
     return (const uint32_t *)(const void *)((const char *)t + off);
 }
 
-/* The layout: o[0..6] = offsets of mu (n), f (n), F (2n: hi, lo), q (n C),
- * kc (C), gx (n), gm (n), each a multiple of 8; returns the total bytes,
+/* The layout: o[0..7] = offsets of mu (n), f (n), F (2n: hi, lo), q (n C),
+ * kc (C), gx (n), gm (n), ih (n: 1 / h_k), each a multiple of 8; returns
+ * the total bytes,
  * 0 where n < 2, n >= 2^32 (the guides' cell indices are 32-bit), channels
  * outside [1, 64] or on overflow. */
 MIST__F size_t MIST__FN(mist__tab_layout)(size_t n, int channels, size_t *o)
 {
-    size_t c, at, i, per[7], fix[7];
+    size_t c, at, i, per[8], fix[8];
     const size_t top = (size_t)-1;
     if (n < 2 || n > (size_t)0xffffffffu || channels < 1 || channels > 64) return 0;
     c = (size_t)channels;
     per[0] = 8; per[1] = 8; per[2] = 16; per[3] = 8 * c; per[4] = 0; per[5] = 4; per[6] = 4;
-    for (i = 0; i < 7; ++i) fix[i] = 0;
+    per[7] = 8;
+    for (i = 0; i < 8; ++i) fix[i] = 0;
     fix[4] = 8 * c;
     at = (sizeof(MIST__TAB) + 7u) / 8u * 8u;
-    for (i = 0; i < 7; ++i) {
+    for (i = 0; i < 8; ++i) {
         o[i] = at;
         if (per[i] && n > (top - at - fix[i] - 7u) / per[i]) return 0;
         at += n * per[i] + fix[i];
@@ -3550,7 +3557,7 @@ MIST__F size_t MIST__FN(mist__tab_layout)(size_t n, int channels, size_t *o)
 /* Bytes a table of n nodes and `channels` channels needs (0: see above). */
 MIST__F size_t MIST__FN(mist_tab_bytes)(size_t n, int channels)
 {
-    size_t o[7];
+    size_t o[8];
     return MIST__FN(mist__tab_layout)(n, channels, o);
 }
 
@@ -3574,9 +3581,9 @@ MIST__F void MIST__FN(mist__tab_acc)(MIST__TW *s, MIST__TW *e, MIST__TW y)
 MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *mu,
                                     const MIST__T *p, size_t n, int channels)
 {
-    size_t o[7], need, i, k, c, C, G, last;
+    size_t o[8], need, i, k, c, C, G, last;
     int err = 0;
-    double *m, *f, *F, *q, *kc;
+    double *m, *f, *F, *q, *kc, *ih;
     uint32_t *gx, *gm;
     MIST__TW s, e, tot;
 #ifdef MIST__W
@@ -3610,7 +3617,10 @@ MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *m
     kc = (double *)(void *)((char *)t + o[4]);
     gx = (uint32_t *)(void *)((char *)t + o[5]);
     gm = (uint32_t *)(void *)((char *)t + o[6]);
+    ih = (double *)(void *)((char *)t + o[7]);
     for (i = 0; i < n; ++i) m[i] = (double)mu[i];
+    for (i = 0; i < G; ++i) ih[i] = 1 / (m[i + 1] - m[i]);
+    ih[G] = 0;
     /* each channel scaled by 2^-e (exact) to a maximum in [1/2, 1), its
      * integral I over mu (compensated), kc = 1/I for now */
     for (c = 0; c < C && !err; ++c) {
@@ -3698,7 +3708,7 @@ MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *m
     t->channels = channels;
     t->n = n;
     t->o_mu = o[0]; t->o_f = o[1]; t->o_F = o[2]; t->o_q = o[3];
-    t->o_kc = o[4]; t->o_gx = o[5]; t->o_gm = o[6];
+    t->o_kc = o[4]; t->o_gx = o[5]; t->o_gm = o[6]; t->o_ih = o[7];
     t->magic = MIST__TAB_OK;
     return 0;
 }
@@ -3722,6 +3732,32 @@ MIST__F size_t MIST__FN(mist__tab_cell)(const MIST__TAB *t, double u)
     return lo;
 }
 
+/* The float eval's cell, branch-free (the batch form vectorises it): the
+ * guide's bucket from v in T, its entry lo, and the largest k <= n - 2
+ * with mu_k <= u if u lies in [mu_lo, mu_lo+2) (lo + 1 or lo); else G = n -
+ * 1 (a bucket of more cells, or v's rounding: the caller's mist__tab_cell). */
+MIST__F size_t MIST__FN(mist__tab_cell1)(const double *m, const uint32_t *g, size_t G, MIST__T u)
+{
+    MIST__T v = MIST__M(copysign)(MIST__C(1) - MIST__M(sqrt)(MIST__C(1) - MIST__M(fabs)(u)), u);
+    MIST__T b = (v + MIST__C(1)) * MIST__C(0.5) * (MIST__T)G;
+    size_t j = b < (MIST__T)G ? (size_t)b : G - 1, lo = g[j], last = G - 1;
+    size_t top = (size_t)(lo == last), k;
+    double x = (double)u;
+    int in = (m[lo] <= x) & ((int)top | (x < m[lo + 2 - top]));
+    k = lo + (size_t)((lo < last) & (m[lo + 1] <= x));
+    return in ? k : G;
+}
+
+/* The float eval's value in cell k at x: the weights by the cell's stored
+ * 1/h (no division); a few eps of double from the interpolant, then
+ * rounded to T once. */
+MIST__F MIST__T MIST__FN(mist__tab_v1)(const double *m, const double *ih, const double *f,
+                                       double norm, size_t k, double x)
+{
+    double wa = (m[k + 1] - x) * ih[k], wb = (x - m[k]) * ih[k];
+    return (MIST__T)((wa * f[k] + wb * f[k + 1]) * norm);
+}
+
 /* mist_tab_eval of a built table */
 MIST__F MIST__T MIST__FN(mist__tab_ev)(const MIST__TAB *t, MIST__T u, MIST__T *channel)
 {
@@ -3733,11 +3769,21 @@ MIST__F MIST__T MIST__FN(mist__tab_ev)(const MIST__TAB *t, MIST__T u, MIST__T *c
         if (channel) for (c = 0; c < C; ++c) channel[c] = MIST__C(0);
         return MIST__C(0);
     }
-    x = (double)MIST__FN(mist__clamp11)(u);
-    k = MIST__FN(mist__tab_cell)(t, x);
-    h = m[k + 1] - m[k];
-    wa = (m[k + 1] - x) / h;                          /* exactly 1, 0 at mu_k */
-    wb = (x - m[k]) / h;
+    u = MIST__FN(mist__clamp11)(u);
+    x = (double)u;
+    if (!MIST__DBL) {                 /* float: one guide step, 1/h stored */
+        const double *ih = MIST__FN(mist__tab_d)(t, t->o_ih);
+        k = MIST__FN(mist__tab_cell1)(m, MIST__FN(mist__tab_g)(t, t->o_gm), t->n - 1, u);
+        if (k == t->n - 1) k = MIST__FN(mist__tab_cell)(t, x);
+        if (!channel) return MIST__FN(mist__tab_v1)(m, ih, f, t->norm, k, x);
+        wa = (m[k + 1] - x) * ih[k];
+        wb = (x - m[k]) * ih[k];
+    } else {
+        k = MIST__FN(mist__tab_cell)(t, x);
+        h = m[k + 1] - m[k];
+        wa = (m[k + 1] - x) / h;                      /* exactly 1, 0 at mu_k */
+        wb = (x - m[k]) / h;
+    }
     if (channel) {
         const double *q = MIST__FN(mist__tab_d)(t, t->o_q) + k * C;
         const double *kc = MIST__FN(mist__tab_d)(t, t->o_kc);
@@ -3890,15 +3936,68 @@ MIST__F MIST__V3 MIST__FN(mist_tab_sample_dir)(const MIST__TAB *t, MIST__V3 wi, 
 
 #ifndef MIST_NO_BATCH
 /* Batch forms: out[i] = mist_tab_eval(t, in[i], NULL), mist_tab_sample(t,
- * in[i]), bit for bit (the same kernels, the table's check once).  A loop,
- * not blocks of MIST__BLK: the guide lookups and bisections are gathers
- * and data-dependent branches, which do not vectorise. */
+ * in[i]), bit for bit (the same expressions, the table's check once).
+ * Float: blocks of MIST__BLK (see the section's float eval); double: a
+ * loop (the double eval's divisions and the sampler's wide type W). */
 MIST__F void MIST__FN(mist_tab_eval_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
                                        size_t n)
 {
     size_t i;
     if (!MIST__FN(mist__tab_ok)(t)) {
         for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_tab_eval)(t, in[i], MIST__NULL);
+        return;
+    }
+    if (!MIST__DBL && t->n - 1 < (size_t)0x7fffffff) {
+        /* float: blocks of MIST__BLK in passes without branches (the
+         * guide's bucket, its one step, the value: gathers), the elements
+         * outside the fast path (NaN, a bucket of more cells) redone by the
+         * scalar function.  The cell is exact either way (verified against
+         * mu), and the value is mist__tab_v1's expression: bit for bit. */
+        const double *m = MIST__FN(mist__tab_d)(t, t->o_mu);
+        const double *f = MIST__FN(mist__tab_d)(t, t->o_f);
+        const double *ih = MIST__FN(mist__tab_d)(t, t->o_ih);
+        const uint32_t *g = MIST__FN(mist__tab_g)(t, t->o_gm);
+        const int32_t last = (int32_t)(t->n - 2);
+        const MIST__T gn = (MIST__T)(t->n - 1);
+        const double norm = t->norm;
+        MIST__T xb[MIST__BLK], yb[MIST__BLK];
+        double xd[MIST__BLK], ma[MIST__BLK], mb[MIST__BLK];
+        int32_t kb[MIST__BLK], fb[MIST__BLK];
+        size_t i0, j, len;
+        for (i0 = 0; i0 < n; i0 += len) {
+            len = n - i0 < MIST__BLK ? n - i0 : MIST__BLK;
+            for (j = 0; j < MIST__BLK; ++j) xb[j] = j < len ? in[i0 + j] : MIST__C(0);
+            for (j = 0; j < MIST__BLK; ++j) {            /* the bucket (NaN: flagged) */
+                MIST__T u = xb[j], a = MIST__M(fabs)(u), v;
+                int32_t q;
+                a = a < MIST__C(1) ? a : MIST__C(1);
+                v = MIST__M(copysign)(MIST__C(1) - MIST__M(sqrt)(MIST__C(1) - a), u);
+                q = (int32_t)((v + MIST__C(1)) * MIST__C(0.5) * gn);
+                kb[j] = q < last ? q : last;
+                xd[j] = (double)MIST__M(copysign)(a, u);      /* u clamped */
+                fb[j] = u != u;
+            }
+            for (j = 0; j < MIST__BLK; ++j) kb[j] = (int32_t)g[kb[j]];   /* its entry */
+            for (j = 0; j < MIST__BLK; ++j) {            /* its one step */
+                int32_t lo = kb[j], top = lo == last, ok, up;
+                double x = xd[j], m0 = m[lo], m1 = m[lo + 1], m2 = m[lo + 2 - top];
+                ok = (int32_t)(m0 <= x) & (top | (int32_t)(x < m2));
+                up = (int32_t)(lo < last) & (int32_t)(m1 <= x);
+                fb[j] |= 1 - ok;
+                kb[j] = (lo + up) * ok;
+                ma[j] = up ? m1 : m0;                    /* mu_k, mu_k+1 */
+                mb[j] = up ? m2 : m1;
+            }
+            for (j = 0; j < MIST__BLK; ++j) {            /* the value */
+                int32_t k = kb[j];
+                double x = xd[j];
+                double wa = (mb[j] - x) * ih[k], wb = (x - ma[j]) * ih[k];
+                yb[j] = (MIST__T)((wa * f[k] + wb * f[k + 1]) * norm);
+            }
+            for (j = 0; j < len; ++j) out[i0 + j] = yb[j];
+            for (j = 0; j < len; ++j)
+                if (fb[j]) out[i0 + j] = MIST__FN(mist__tab_ev)(t, xb[j], MIST__NULL);
+        }
         return;
     }
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__tab_ev)(t, in[i], MIST__NULL);
@@ -3912,6 +4011,71 @@ MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, 
         for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(MIST__C(0), in[i]);
         return;
     }
+    if (!MIST__DBL && t->n - 1 < (size_t)0x7fffffff) {
+        /* float: blocks of MIST__BLK in passes without branches (the guide's
+         * bucket, its one step, the root by both forms, selected), the
+         * elements outside them (xi outside [0, 1] or NaN, the support's
+         * top, a bucket of more cells) redone by the scalar function.  The
+         * cell is exact either way (verified against F) and the root is
+         * mist__tab_sm's expressions: bit for bit. */
+        const double *m = MIST__FN(mist__tab_d)(t, t->o_mu);
+        const double *f = MIST__FN(mist__tab_d)(t, t->o_f);
+        const double *F = MIST__FN(mist__tab_d)(t, t->o_F);
+        const uint32_t *g = MIST__FN(mist__tab_g)(t, t->o_gx);
+        const size_t G = t->n - 1;
+        const int32_t last = (int32_t)(G - 1);
+        const MIST__TW tot = (MIST__TW)t->tot[0] + (MIST__TW)t->tot[1];
+        const MIST__TW top_x = (MIST__TW)F[2 * G] + (MIST__TW)F[2 * G + 1];
+        MIST__T xb[MIST__BLK], yb[MIST__BLK];
+        MIST__TW xw[MIST__BLK], fk[MIST__BLK];
+        int32_t kb[MIST__BLK], fb[MIST__BLK];
+        size_t i0, j, len;
+        for (i0 = 0; i0 < n; i0 += len) {
+            len = n - i0 < MIST__BLK ? n - i0 : MIST__BLK;
+            for (j = 0; j < MIST__BLK; ++j) xb[j] = j < len ? in[i0 + j] : MIST__C(0);
+            for (j = 0; j < MIST__BLK; ++j) {            /* the bucket */
+                MIST__T xi = xb[j];
+                int32_t in01 = (int32_t)(xi >= MIST__C(0)) & (int32_t)(xi <= MIST__C(1)), q;
+                MIST__TW x;
+                xi = in01 ? xi : MIST__C(0);
+                x = (MIST__TW)xi * tot;
+                q = (int32_t)((MIST__TW)xi * (MIST__TW)G);
+                kb[j] = q < last ? q : last;
+                xw[j] = x;
+                fb[j] = (1 - in01) | (int32_t)(top_x <= x);
+            }
+            for (j = 0; j < MIST__BLK; ++j) kb[j] = (int32_t)g[kb[j]];   /* its entry */
+            for (j = 0; j < MIST__BLK; ++j) {            /* its one step */
+                int32_t lo = kb[j], top = lo == last, ok, up, l2 = lo + 2 - top;
+                MIST__TW x = xw[j];
+                MIST__TW F0 = (MIST__TW)F[2 * lo] + (MIST__TW)F[2 * lo + 1];
+                MIST__TW F1 = (MIST__TW)F[2 * lo + 2] + (MIST__TW)F[2 * lo + 3];
+                MIST__TW F2 = (MIST__TW)F[2 * l2] + (MIST__TW)F[2 * l2 + 1];
+                ok = (int32_t)(F0 <= x) & (top | (int32_t)(x < F2));
+                up = (int32_t)(lo < last) & (int32_t)(F1 <= x);
+                fb[j] |= 1 - ok;
+                kb[j] = (lo + up) * ok;
+                fk[j] = up ? F1 : F0;
+            }
+            for (j = 0; j < MIST__BLK; ++j) {            /* the root */
+                int32_t k = kb[j];
+                MIST__TW ml = (MIST__TW)m[k], mh = (MIST__TW)m[k + 1], a = (MIST__TW)f[k];
+                MIST__TW b = ((MIST__TW)f[k + 1] - a) / (mh - ml), r = xw[j] - fk[j];
+                MIST__TW qa = a / r, d = a * a + 2 * b * r, w1, w2, w, u;
+                w1 = 2 / (qa + MIST__TWM(sqrt)(qa * qa + 2 * b / r));
+                w2 = 2 * r / (a + MIST__TWM(sqrt)(d > 0 ? d : 0));
+                w = b >= 0 ? w1 : w2;
+                w = r > 0 ? w : 0;
+                u = ml + w;
+                yb[j] = (MIST__T)(u < mh ? u : mh);
+            }
+            for (j = 0; j < len; ++j) out[i0 + j] = yb[j];
+            for (j = 0; j < len; ++j)
+                if (fb[j])
+                    out[i0 + j] = MIST__FN(mist_tab_sample)(t, xb[j]);
+        }
+        return;
+    }
     for (i = 0; i < n; ++i)
         out[i] = MIST__FN(mist__tab_sm)(t, MIST__FN(mist__clamp)(in[i], MIST__C(0), MIST__C(1)));
 }
@@ -3920,6 +4084,9 @@ MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, 
 #undef MIST__TW
 #undef MIST__TWM
 #endif /* !MIST_NO_TAB */
+#undef MIST__BLOCKS
+#undef MIST__BLOCKS_FB
+#undef MIST__BLK
 
 #ifndef MIST_NO_HFOG
 /* ======================================================================== */
