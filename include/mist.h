@@ -664,6 +664,289 @@ MIST_FUNC double mist__draine_eq6(double g, double alpha, double xi)
 
 #undef MIST__TEMPLATE
 
+/* ======================================================================== */
+/* THE API: every public function in plain C, double then float (the same  */
+/* name + f).  Each forwards to its one type-generic definition,            */
+/* mist__impl_NAME, in the body below, whose section names the paper and   */
+/* equation, the reformulation and its bound.  Domain and bad input: the    */
+/* top of the file.                                                         */
+/* ======================================================================== */
+#define MIST__API MIST_FUNC MIST__API_HOT
+
+/* Henyey-Greenstein [HG41]: the density per steradian at the cosine u, and the exact
+ * inverse CDF at xi (u = cos theta between propagation directions) */
+MIST__API double mist_hg_eval(double g, double u) { return mist__impl_hg_eval(g, u); }
+MIST__API float mist_hg_evalf(float g, float u) { return mist__impl_hg_evalf(g, u); }
+MIST__API double mist_hg_sample(double g, double xi) { return mist__impl_hg_sample(g, xi); }
+MIST__API float mist_hg_samplef(float g, float xi) { return mist__impl_hg_samplef(g, xi); }
+
+/* Cornette-Shanks [CS92]: Draine at alpha = 1 */
+#ifndef MIST_NO_DRAINE
+MIST__API double mist_cs_eval(double g, double u) { return mist__impl_cs_eval(g, u); }
+MIST__API float mist_cs_evalf(float g, float u) { return mist__impl_cs_evalf(g, u); }
+MIST__API double mist_cs_sample(double g, double xi) { return mist__impl_cs_sample(g, xi); }
+MIST__API float mist_cs_samplef(float g, float xi) { return mist__impl_cs_samplef(g, xi); }
+#endif
+
+/* Draine [D03]: HG (1 + alpha u^2) / (1 + alpha (1 + 2 g^2) / 3) */
+#ifndef MIST_NO_DRAINE
+MIST__API double mist_draine_eval(double g, double alpha, double u)
+    { return mist__impl_draine_eval(g, alpha, u); }
+MIST__API float mist_draine_evalf(float g, float alpha, float u)
+    { return mist__impl_draine_evalf(g, alpha, u); }
+MIST__API double mist_draine_sample(double g, double alpha, double xi)
+    { return mist__impl_draine_sample(g, alpha, xi); }
+MIST__API float mist_draine_samplef(float g, float alpha, float xi)
+    { return mist__impl_draine_samplef(g, alpha, xi); }
+#endif
+
+/* Rayleigh: 3 / (16 pi) (1 + u^2) */
+#ifndef MIST_NO_RAYLEIGH
+MIST__API double mist_rayleigh_eval(double u) { return mist__impl_rayleigh_eval(u); }
+MIST__API float mist_rayleigh_evalf(float u) { return mist__impl_rayleigh_evalf(u); }
+MIST__API double mist_rayleigh_sample(double xi) { return mist__impl_rayleigh_sample(xi); }
+MIST__API float mist_rayleigh_samplef(float xi) { return mist__impl_rayleigh_samplef(xi); }
+#endif
+
+/* The fog mix [JD23 eq. 1]: (1 - w_d) HG(g_hg) + w_d Draine(g_d, alpha); one xi picks
+ * the lobe, then samples it.  mist_fog_from_diameter: the fits [JD23 eq. 7-22], d in um */
+#ifndef MIST_NO_FOG
+MIST__API mist_fog mist_fog_make(double g_hg, double g_d, double alpha, double w_d)
+    { return mist__impl_fog_make(g_hg, g_d, alpha, w_d); }
+MIST__API mist_fogf mist_fog_makef(float g_hg, float g_d, float alpha, float w_d)
+    { return mist__impl_fog_makef(g_hg, g_d, alpha, w_d); }
+MIST__API double mist_fog_eval(mist_fog fog, double u) { return mist__impl_fog_eval(fog, u); }
+MIST__API float mist_fog_evalf(mist_fogf fog, float u) { return mist__impl_fog_evalf(fog, u); }
+MIST__API double mist_fog_sample(mist_fog fog, double xi)
+    { return mist__impl_fog_sample(fog, xi); }
+MIST__API float mist_fog_samplef(mist_fogf fog, float xi)
+    { return mist__impl_fog_samplef(fog, xi); }
+MIST__API mist_fog mist_fog_from_diameter(double d) { return mist__impl_fog_from_diameter(d); }
+MIST__API mist_fogf mist_fog_from_diameterf(float d) { return mist__impl_fog_from_diameterf(d); }
+#endif
+
+/* Prepared phase functions: build once per medium, then evaluate and sample through a
+ * pointer (the same results to a few ulps, less work; NULL is isotropic) */
+#ifndef MIST_NO_FOG
+MIST__API mist_phase mist_phase_hg(double g) { return mist__impl_phase_hg(g); }
+MIST__API mist_phasef mist_phase_hgf(float g) { return mist__impl_phase_hgf(g); }
+MIST__API mist_phase mist_phase_cs(double g) { return mist__impl_phase_cs(g); }
+MIST__API mist_phasef mist_phase_csf(float g) { return mist__impl_phase_csf(g); }
+MIST__API mist_phase mist_phase_draine(double g, double alpha)
+    { return mist__impl_phase_draine(g, alpha); }
+MIST__API mist_phasef mist_phase_drainef(float g, float alpha)
+    { return mist__impl_phase_drainef(g, alpha); }
+#endif
+#if !defined(MIST_NO_FOG) && !defined(MIST_NO_RAYLEIGH)
+MIST__API mist_phase mist_phase_rayleigh(void) { return mist__impl_phase_rayleigh(); }
+MIST__API mist_phasef mist_phase_rayleighf(void) { return mist__impl_phase_rayleighf(); }
+#endif
+#ifndef MIST_NO_FOG
+MIST__API mist_phase mist_phase_fog(mist_fog fog) { return mist__impl_phase_fog(fog); }
+MIST__API mist_phasef mist_phase_fogf(mist_fogf fog) { return mist__impl_phase_fogf(fog); }
+MIST__API double mist_phase_eval(const mist_phase *p, double u)
+    { return mist__impl_phase_eval(p, u); }
+MIST__API float mist_phase_evalf(const mist_phasef *p, float u)
+    { return mist__impl_phase_evalf(p, u); }
+MIST__API double mist_phase_sample(const mist_phase *p, double xi)
+    { return mist__impl_phase_sample(p, xi); }
+MIST__API float mist_phase_samplef(const mist_phasef *p, float xi)
+    { return mist__impl_phase_samplef(p, xi); }
+#endif
+
+/* Directions: a scattered direction about the propagation direction wi (any non-zero
+ * length), u from xi1 and the azimuth from xi2; *pdf = the density at it (may be NULL) */
+MIST__API mist_vec3 mist_normalize(mist_vec3 v) { return mist__impl_normalize(v); }
+MIST__API mist_vec3f mist_normalizef(mist_vec3f v) { return mist__impl_normalizef(v); }
+#ifndef MIST_NO_DIR
+MIST__API mist_vec3 mist_dir_from_cos(mist_vec3 wi, double u, double xi)
+    { return mist__impl_dir_from_cos(wi, u, xi); }
+MIST__API mist_vec3f mist_dir_from_cosf(mist_vec3f wi, float u, float xi)
+    { return mist__impl_dir_from_cosf(wi, u, xi); }
+MIST__API mist_vec3 mist_hg_sample_dir(double g, mist_vec3 wi, double xi1, double xi2, double *pdf)
+    { return mist__impl_hg_sample_dir(g, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_hg_sample_dirf(float g, mist_vec3f wi, float xi1, float xi2, float *pdf)
+    { return mist__impl_hg_sample_dirf(g, wi, xi1, xi2, pdf); }
+#endif
+#if !defined(MIST_NO_DIR) && !defined(MIST_NO_DRAINE)
+MIST__API mist_vec3 mist_cs_sample_dir(double g, mist_vec3 wi, double xi1, double xi2, double *pdf)
+    { return mist__impl_cs_sample_dir(g, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_cs_sample_dirf(float g, mist_vec3f wi, float xi1, float xi2, float *pdf)
+    { return mist__impl_cs_sample_dirf(g, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3 mist_draine_sample_dir(double g, double alpha, mist_vec3 wi, double xi1,
+                                           double xi2, double *pdf)
+    { return mist__impl_draine_sample_dir(g, alpha, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_draine_sample_dirf(float g, float alpha, mist_vec3f wi, float xi1,
+                                             float xi2, float *pdf)
+    { return mist__impl_draine_sample_dirf(g, alpha, wi, xi1, xi2, pdf); }
+#endif
+#if !defined(MIST_NO_DIR) && !defined(MIST_NO_RAYLEIGH)
+MIST__API mist_vec3 mist_rayleigh_sample_dir(mist_vec3 wi, double xi1, double xi2, double *pdf)
+    { return mist__impl_rayleigh_sample_dir(wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_rayleigh_sample_dirf(mist_vec3f wi, float xi1, float xi2, float *pdf)
+    { return mist__impl_rayleigh_sample_dirf(wi, xi1, xi2, pdf); }
+#endif
+#if !defined(MIST_NO_DIR) && !defined(MIST_NO_FOG)
+MIST__API mist_vec3 mist_fog_sample_dir(mist_fog fog, mist_vec3 wi, double xi1, double xi2,
+                                        double *pdf)
+    { return mist__impl_fog_sample_dir(fog, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_fog_sample_dirf(mist_fogf fog, mist_vec3f wi, float xi1, float xi2,
+                                          float *pdf)
+    { return mist__impl_fog_sample_dirf(fog, wi, xi1, xi2, pdf); }
+#endif
+#if !defined(MIST_NO_FOG) && !defined(MIST_NO_DIR)
+MIST__API mist_vec3 mist_phase_sample_dir(const mist_phase *p, mist_vec3 wi, double xi1,
+                                          double xi2, double *pdf)
+    { return mist__impl_phase_sample_dir(p, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_phase_sample_dirf(const mist_phasef *p, mist_vec3f wi, float xi1,
+                                            float xi2, float *pdf)
+    { return mist__impl_phase_sample_dirf(p, wi, xi1, xi2, pdf); }
+#endif
+
+/* Batch forms: out[i] = the scalar function of in[i] for i < n, bit for bit; out may
+ * equal in (no other overlap); n = 0 does nothing */
+#ifndef MIST_NO_BATCH
+MIST__API void mist_hg_eval_n(double g, const double *in, double *out, size_t n)
+    { mist__impl_hg_eval_n(g, in, out, n); }
+MIST__API void mist_hg_eval_nf(float g, const float *in, float *out, size_t n)
+    { mist__impl_hg_eval_nf(g, in, out, n); }
+MIST__API void mist_hg_sample_n(double g, const double *in, double *out, size_t n)
+    { mist__impl_hg_sample_n(g, in, out, n); }
+MIST__API void mist_hg_sample_nf(float g, const float *in, float *out, size_t n)
+    { mist__impl_hg_sample_nf(g, in, out, n); }
+#endif
+#if !defined(MIST_NO_BATCH) && !defined(MIST_NO_DRAINE)
+MIST__API void mist_draine_eval_n(double g, double alpha, const double *in, double *out, size_t n)
+    { mist__impl_draine_eval_n(g, alpha, in, out, n); }
+MIST__API void mist_draine_eval_nf(float g, float alpha, const float *in, float *out, size_t n)
+    { mist__impl_draine_eval_nf(g, alpha, in, out, n); }
+MIST__API void mist_draine_sample_n(double g, double alpha, const double *in, double *out,
+                                    size_t n)
+    { mist__impl_draine_sample_n(g, alpha, in, out, n); }
+MIST__API void mist_draine_sample_nf(float g, float alpha, const float *in, float *out, size_t n)
+    { mist__impl_draine_sample_nf(g, alpha, in, out, n); }
+#endif
+#if !defined(MIST_NO_BATCH) && !defined(MIST_NO_RAYLEIGH)
+MIST__API void mist_rayleigh_eval_n(const double *in, double *out, size_t n)
+    { mist__impl_rayleigh_eval_n(in, out, n); }
+MIST__API void mist_rayleigh_eval_nf(const float *in, float *out, size_t n)
+    { mist__impl_rayleigh_eval_nf(in, out, n); }
+MIST__API void mist_rayleigh_sample_n(const double *in, double *out, size_t n)
+    { mist__impl_rayleigh_sample_n(in, out, n); }
+MIST__API void mist_rayleigh_sample_nf(const float *in, float *out, size_t n)
+    { mist__impl_rayleigh_sample_nf(in, out, n); }
+#endif
+#if !defined(MIST_NO_BATCH) && !defined(MIST_NO_FOG)
+MIST__API void mist_phase_eval_n(const mist_phase *p, const double *in, double *out, size_t n)
+    { mist__impl_phase_eval_n(p, in, out, n); }
+MIST__API void mist_phase_eval_nf(const mist_phasef *p, const float *in, float *out, size_t n)
+    { mist__impl_phase_eval_nf(p, in, out, n); }
+MIST__API void mist_phase_sample_n(const mist_phase *p, const double *in, double *out, size_t n)
+    { mist__impl_phase_sample_n(p, in, out, n); }
+MIST__API void mist_phase_sample_nf(const mist_phasef *p, const float *in, float *out, size_t n)
+    { mist__impl_phase_sample_nf(p, in, out, n); }
+#endif
+
+/* Analytic height fog [I18] along origin + t dir, 0 <= t <= length (+inf allowed):
+ * transmittance T, in-scattered light L, a background B seen as B T + L; the optical
+ * column of the density from height y along vertical cosine w; several layers, with a
+ * bound on the in-scatter's error */
+#ifndef MIST_NO_HFOG
+MIST__API mist_rgb mist_hfog_transmittance(const mist_hfog *fog, mist_vec3 origin, mist_vec3 dir,
+                                           double length)
+    { return mist__impl_hfog_transmittance(fog, origin, dir, length); }
+MIST__API mist_rgbf mist_hfog_transmittancef(const mist_hfogf *fog, mist_vec3f origin,
+                                             mist_vec3f dir, float length)
+    { return mist__impl_hfog_transmittancef(fog, origin, dir, length); }
+MIST__API mist_rgb mist_hfog_inscatter(const mist_hfog *fog, mist_vec3 origin, mist_vec3 dir,
+                                       double length)
+    { return mist__impl_hfog_inscatter(fog, origin, dir, length); }
+MIST__API mist_rgbf mist_hfog_inscatterf(const mist_hfogf *fog, mist_vec3f origin, mist_vec3f dir,
+                                         float length)
+    { return mist__impl_hfog_inscatterf(fog, origin, dir, length); }
+MIST__API mist_rgb mist_hfog_apply(const mist_hfog *fog, mist_vec3 origin, mist_vec3 dir,
+                                   double length, mist_rgb background)
+    { return mist__impl_hfog_apply(fog, origin, dir, length, background); }
+MIST__API mist_rgbf mist_hfog_applyf(const mist_hfogf *fog, mist_vec3f origin, mist_vec3f dir,
+                                     float length, mist_rgbf background)
+    { return mist__impl_hfog_applyf(fog, origin, dir, length, background); }
+MIST__API void mist_hfog_eval(const mist_hfog *fog, mist_vec3 origin, mist_vec3 dir,
+                              double length, mist_rgb *transmittance, mist_rgb *inscatter)
+    { mist__impl_hfog_eval(fog, origin, dir, length, transmittance, inscatter); }
+MIST__API void mist_hfog_evalf(const mist_hfogf *fog, mist_vec3f origin, mist_vec3f dir,
+                               float length, mist_rgbf *transmittance, mist_rgbf *inscatter)
+    { mist__impl_hfog_evalf(fog, origin, dir, length, transmittance, inscatter); }
+MIST__API double mist_hfog_column(const mist_hfog *fog, double y, double w, double length)
+    { return mist__impl_hfog_column(fog, y, w, length); }
+MIST__API float mist_hfog_columnf(const mist_hfogf *fog, float y, float w, float length)
+    { return mist__impl_hfog_columnf(fog, y, w, length); }
+MIST__API void mist_hfog_layers_eval(const mist_hfog *layers, int n, mist_vec3 origin,
+                                     mist_vec3 dir, double length, int pieces,
+                                     mist_rgb *transmittance, mist_rgb *inscatter, mist_rgb *bound)
+    { mist__impl_hfog_layers_eval(layers, n, origin, dir, length, pieces, transmittance,
+                                  inscatter, bound); }
+MIST__API void mist_hfog_layers_evalf(const mist_hfogf *layers, int n, mist_vec3f origin,
+                                      mist_vec3f dir, float length, int pieces,
+                                      mist_rgbf *transmittance, mist_rgbf *inscatter,
+                                      mist_rgbf *bound)
+    { mist__impl_hfog_layers_evalf(layers, n, origin, dir, length, pieces, transmittance,
+                                   inscatter, bound); }
+#endif
+
+/* Tabulated phase functions: n cosines mu (rising from -1 to 1) and channels values each,
+ * linear in mu per channel and normalised exactly, in the caller's bytes; evaluated and
+ * sampled by the exact inverse CDF of the channels' mean in O(1) (docs/tables.md) */
+#ifndef MIST_NO_TAB
+MIST__API size_t mist_tab_bytes(size_t n, int channels)
+    { return mist__impl_tab_bytes(n, channels); }
+MIST__API size_t mist_tab_bytesf(size_t n, int channels)
+    { return mist__impl_tab_bytesf(n, channels); }
+MIST__API int mist_tab_init(mist_tab *t, size_t bytes, const double *mu, const double *p,
+                            size_t n, int channels)
+    { return mist__impl_tab_init(t, bytes, mu, p, n, channels); }
+MIST__API int mist_tab_initf(mist_tabf *t, size_t bytes, const float *mu, const float *p,
+                             size_t n, int channels)
+    { return mist__impl_tab_initf(t, bytes, mu, p, n, channels); }
+MIST__API double mist_tab_eval(const mist_tab *t, double u, double *channel)
+    { return mist__impl_tab_eval(t, u, channel); }
+MIST__API float mist_tab_evalf(const mist_tabf *t, float u, float *channel)
+    { return mist__impl_tab_evalf(t, u, channel); }
+MIST__API double mist_tab_sample(const mist_tab *t, double xi)
+    { return mist__impl_tab_sample(t, xi); }
+MIST__API float mist_tab_samplef(const mist_tabf *t, float xi)
+    { return mist__impl_tab_samplef(t, xi); }
+#endif
+#if !defined(MIST_NO_TAB) && !defined(MIST_NO_DIR)
+MIST__API mist_vec3 mist_tab_sample_dir(const mist_tab *t, mist_vec3 wi, double xi1, double xi2,
+                                        double *pdf)
+    { return mist__impl_tab_sample_dir(t, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_tab_sample_dirf(const mist_tabf *t, mist_vec3f wi, float xi1, float xi2,
+                                          float *pdf)
+    { return mist__impl_tab_sample_dirf(t, wi, xi1, xi2, pdf); }
+#endif
+#if !defined(MIST_NO_TAB) && !defined(MIST_NO_BATCH)
+MIST__API void mist_tab_eval_n(const mist_tab *t, const double *in, double *out, size_t n)
+    { mist__impl_tab_eval_n(t, in, out, n); }
+MIST__API void mist_tab_eval_nf(const mist_tabf *t, const float *in, float *out, size_t n)
+    { mist__impl_tab_eval_nf(t, in, out, n); }
+MIST__API void mist_tab_sample_n(const mist_tab *t, const double *in, double *out, size_t n)
+    { mist__impl_tab_sample_n(t, in, out, n); }
+MIST__API void mist_tab_sample_nf(const mist_tabf *t, const float *in, float *out, size_t n)
+    { mist__impl_tab_sample_nf(t, in, out, n); }
+#endif
+
+/* A ray-marching step [B08]: extinction linear from k0 to k1 and source from s0 to s1
+ * over length; returns the in-scatter, *transmittance the step's */
+#ifndef MIST_NO_HFOG
+MIST__API double mist_segment_linear(double k0, double k1, double s0, double s1, double length,
+                                     double *transmittance)
+    { return mist__impl_segment_linear(k0, k1, s0, s1, length, transmittance); }
+MIST__API float mist_segment_linearf(float k0, float k1, float s0, float s1, float length,
+                                     float *transmittance)
+    { return mist__impl_segment_linearf(k0, k1, s0, s1, length, transmittance); }
+#endif
+#undef MIST__API
+
 #define MIST__FP_POP
 #include "mist.h"
 #undef MIST__FP_POP
@@ -1182,7 +1465,7 @@ MIST__F int MIST__FN(mist__dens_off)(MIST__T *g, MIST__T *u, MIST__T *r)
 
 /* Henyey-Greenstein density per steradian, [JD23 eq. 2].
  * Domain: g in [-1, 1], u in [-1, 1] (see DOMAIN AND BAD INPUT). */
-MIST__F MIST__T MIST__FN(mist_hg_eval)(MIST__T g, MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_hg_eval)(MIST__T g, MIST__T u)
 {   /* one test of the domain (NaN fails), the sanitising only off it, and
      * one copy of the formula (two copies may contract into fma
      * differently: a clamped u then differed from u = +-1 by an ulp under
@@ -1198,7 +1481,7 @@ MIST__F MIST__T MIST__FN(mist_hg_eval)(MIST__T g, MIST__T u)
 #ifndef MIST_NO_DRAINE
 /* Draine density per steradian, [JD23 eq. 5].
  * Domain: g in [-1, 1], alpha in [0, +inf], u in [-1, 1]. */
-MIST__F MIST__T MIST__FN(mist_draine_eval)(MIST__T g, MIST__T alpha, MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_draine_eval)(MIST__T g, MIST__T alpha, MIST__T u)
 {
     MIST__T c0, c1, r;
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
@@ -1209,15 +1492,15 @@ MIST__F MIST__T MIST__FN(mist_draine_eval)(MIST__T g, MIST__T alpha, MIST__T u)
 }
 
 /* Cornette-Shanks density per steradian [CS92]: Draine with alpha = 1. */
-MIST__F MIST__T MIST__FN(mist_cs_eval)(MIST__T g, MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_cs_eval)(MIST__T g, MIST__T u)
 {
-    return MIST__FN(mist_draine_eval)(g, MIST__C(1), u);
+    return MIST__FN(mist__impl_draine_eval)(g, MIST__C(1), u);
 }
 #endif /* !MIST_NO_DRAINE */
 
 #ifndef MIST_NO_RAYLEIGH
 /* Rayleigh density per steradian: 3/(16 pi) (1 + u^2).  Domain u in [-1,1]. */
-MIST__F MIST__T MIST__FN(mist_rayleigh_eval)(MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_rayleigh_eval)(MIST__T u)
 {
     MIST__T c = MIST__FN(mist__clamp11)(u);
     return u == u ? MIST__C(MIST__3_16PI) * (MIST__C(1) + c * c) : MIST__C(0);
@@ -1266,7 +1549,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hg_any)(MIST__T g, MIST__T xi)
 
 /* Henyey-Greenstein: u with P(cos <= u) = xi, exact.
  * Domain: g in [-1, 1], xi in [0, 1]. */
-MIST__F MIST__API_HOT MIST__T MIST__FN(mist_hg_sample)(MIST__T g, MIST__T xi)
+MIST__F MIST__API_HOT MIST__T MIST__FN(mist__impl_hg_sample)(MIST__T g, MIST__T xi)
 {
 #if defined(MIST__W_EXACT)
     /* float: the parameter's terms before any branch, so that a caller's
@@ -2100,17 +2383,15 @@ MIST__F MIST__T MIST__FN(mist__draine_solve)(MIST__T g, MIST__T alpha, MIST__T c
  * interpolant in interval *j (tab: u at xi = j/K, then the slopes
  * du/dxi / K). */
 /* xi's table interval.  xi is in [+0, 1] here, sanitised by the caller;
- * the index is still bounded in integers, on xi's bits (NaN's lie above
- * those of 1), so that no build, fast math without the guard included,
- * converts a NaN or reads outside the table. */
+ * the index is still clamped in integers after the conversion, so that a
+ * NaN that reaches it (a build without the fast-math guard, where the
+ * caller's clamp may fold away) gives an interval inside the table (x86
+ * converts NaN to INT_MIN, ARM to 0), never a read outside it.  Selects
+ * on integers: the batch loops stay vectorised. */
 MIST__F MIST__HOT int MIST__FN(mist__phase_k)(MIST__T xi)
 {
-    MIST__UB b, one;
-    MIST__T x1 = MIST__C(1);
-    int k;
-    memcpy(&b, &xi, sizeof b);
-    memcpy(&one, &x1, sizeof one);
-    k = b <= one ? (int)(xi * MIST__PHASE_K) : 0;
+    int k = (int)(xi * MIST__PHASE_K);
+    k = k < 0 ? 0 : k;
     return k < MIST__PHASE_K ? k : MIST__PHASE_K - 1;
 }
 MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_start)(const MIST__T *tab, MIST__T xi, int *j)
@@ -2339,7 +2620,7 @@ MIST__F MIST__T MIST__FN(mist__draine_sample)(MIST__T g, MIST__T alpha, MIST__T 
  * u, or where u is ill-conditioned in xi, near u = 0 at large alpha, 4 eps
  * xi du/dxi: see the section comment).
  * Domain: g in [-1, 1], alpha in [0, +inf], xi in [0, 1]. */
-MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T xi)
+MIST__F MIST__T MIST__FN(mist__impl_draine_sample)(MIST__T g, MIST__T alpha, MIST__T xi)
 {
     MIST__T c0, c1;
     MIST__FN(mist__draine_c)(alpha, &c0, &c1);
@@ -2349,7 +2630,7 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
                              * differently: an ulp apart under gcc -O3 -march=native
                              * -ffp-contract=fast; float keeps mist__hg_any, which
                              * costs fewer registers in CUDA device code) */
-        return MIST__FN(mist_hg_sample)(g, xi);
+        return MIST__FN(mist__impl_hg_sample)(g, xi);
     return MIST__FN(mist__draine_sample)(MIST__FN(mist__g)(g),
                                          alpha > MIST__C(0) ? alpha : MIST__C(0), c0, c1,
                                          MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)),
@@ -2357,9 +2638,9 @@ MIST__F MIST__T MIST__FN(mist_draine_sample)(MIST__T g, MIST__T alpha, MIST__T x
 }
 
 /* Cornette-Shanks: Draine with alpha = 1. Domain: g in [-1,1], xi in [0,1]. */
-MIST__F MIST__T MIST__FN(mist_cs_sample)(MIST__T g, MIST__T xi)
+MIST__F MIST__T MIST__FN(mist__impl_cs_sample)(MIST__T g, MIST__T xi)
 {
-    return MIST__FN(mist_draine_sample)(g, MIST__C(1), xi);
+    return MIST__FN(mist__impl_draine_sample)(g, MIST__C(1), xi);
 }
 
 /* The unprepared Draine batch samplers' kernel, where square roots
@@ -2454,7 +2735,7 @@ MIST__F void MIST__FN(mist__draine_vk)(MIST__T g, MIST__T alpha, MIST__T c0, MIS
 
 #ifndef MIST_NO_RAYLEIGH
 /* Rayleigh: u with P(cos <= u) = xi, exact.  Domain: xi in [0, 1]. */
-MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
+MIST__F MIST__T MIST__FN(mist__impl_rayleigh_sample)(MIST__T xi)
 {
     MIST__T u;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
@@ -2480,7 +2761,7 @@ MIST__F MIST__T MIST__FN(mist_rayleigh_sample)(MIST__T xi)
 
 /* A fog phase function from its four parameters, sanitised: g's clamped to
  * [-1, 1] (NaN -> 0), alpha >= 0 (NaN, negative -> 0), w_d in [0, 1]. */
-MIST__F MIST__FOG MIST__FN(mist_fog_make)(MIST__T g_hg, MIST__T g_d, MIST__T alpha, MIST__T w_d)
+MIST__F MIST__FOG MIST__FN(mist__impl_fog_make)(MIST__T g_hg, MIST__T g_d, MIST__T alpha, MIST__T w_d)
 {
     MIST__FOG f;
     f.g_hg  = MIST__FN(mist__g)(g_hg);
@@ -2501,15 +2782,15 @@ MIST__F MIST__FOG MIST__FN(mist_fog_make)(MIST__T g_hg, MIST__T g_d, MIST__T alp
 MIST__F MIST__T MIST__FN(mist__fog_eval)(const MIST__FOG *fog, MIST__T u)
 {
     MIST__T w = MIST__FN(mist__clamp)(fog->w_d, MIST__C(0), MIST__C(1));
-    MIST__T d = w > MIST__C(0) ? MIST__FN(mist_draine_eval)(fog->g_d, fog->alpha, u)
+    MIST__T d = w > MIST__C(0) ? MIST__FN(mist__impl_draine_eval)(fog->g_d, fog->alpha, u)
                                : MIST__C(0);
-    MIST__T h = w < MIST__C(1) ? MIST__FN(mist_hg_eval)(fog->g_hg, u) : MIST__C(0);
+    MIST__T h = w < MIST__C(1) ? MIST__FN(mist__impl_hg_eval)(fog->g_hg, u) : MIST__C(0);
     return (MIST__C(1) - w) * h + w * d;
 }
 
 /* Fog density per steradian.  Domain: u in [-1, 1]; the parameters are
  * sanitised again here, so a hand-filled struct is safe too. */
-MIST__F MIST__T MIST__FN(mist_fog_eval)(MIST__FOG fog, MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_fog_eval)(MIST__FOG fog, MIST__T u)
 {
     return MIST__FN(mist__fog_eval)(&fog, u);
 }
@@ -2539,13 +2820,13 @@ MIST__F int MIST__FN(mist__fog_pick)(MIST__T xi, MIST__T w, MIST__T *x, MIST__T 
 
 /* Fog: a sample u of the mixture, from one xi in [0, 1].  Domain: xi in
  * [0, 1] (clamped; NaN taken as 0); fog sanitised as mist_fog_make. */
-MIST__F MIST__T MIST__FN(mist_fog_sample)(MIST__FOG fog, MIST__T xi)
+MIST__F MIST__T MIST__FN(mist__impl_fog_sample)(MIST__FOG fog, MIST__T xi)
 {
     MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1)), x, s;
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
     if (MIST__FN(mist__fog_pick)(xi, w, &x, &s))
-        return s * MIST__FN(mist_draine_sample)(s * fog.g_d, fog.alpha, x);
-    return s * MIST__FN(mist_hg_sample)(s * fog.g_hg, x);
+        return s * MIST__FN(mist__impl_draine_sample)(s * fog.g_d, fog.alpha, x);
+    return s * MIST__FN(mist__impl_hg_sample)(s * fog.g_hg, x);
 }
 
 /* ======================================================================== */
@@ -2699,28 +2980,28 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
 /* Henyey-Greenstein, Draine, Cornette-Shanks (Draine at alpha = 1), the
  * Jendersie-d'Eon fog (sanitised as mist_fog_make), Rayleigh: prepared.
  * Domain: any parameters, sanitised as the unprepared functions do. */
-MIST__F MIST__PHASE MIST__FN(mist_phase_hg)(MIST__T g)
+MIST__F MIST__PHASE MIST__FN(mist__impl_phase_hg)(MIST__T g)
 {
     return MIST__FN(mist__phase_make)(0, g, MIST__C(0), MIST__C(0), MIST__C(0));
 }
 
-MIST__F MIST__PHASE MIST__FN(mist_phase_draine)(MIST__T g, MIST__T alpha)
+MIST__F MIST__PHASE MIST__FN(mist__impl_phase_draine)(MIST__T g, MIST__T alpha)
 {
     return MIST__FN(mist__phase_make)(0, MIST__C(0), g, alpha, MIST__C(1));
 }
 
-MIST__F MIST__PHASE MIST__FN(mist_phase_cs)(MIST__T g)
+MIST__F MIST__PHASE MIST__FN(mist__impl_phase_cs)(MIST__T g)
 {
     return MIST__FN(mist__phase_make)(0, MIST__C(0), g, MIST__C(1), MIST__C(1));
 }
 
-MIST__F MIST__PHASE MIST__FN(mist_phase_fog)(MIST__FOG fog)
+MIST__F MIST__PHASE MIST__FN(mist__impl_phase_fog)(MIST__FOG fog)
 {
     return MIST__FN(mist__phase_make)(0, fog.g_hg, fog.g_d, fog.alpha, fog.w_d);
 }
 
 #ifndef MIST_NO_RAYLEIGH
-MIST__F MIST__PHASE MIST__FN(mist_phase_rayleigh)(void)
+MIST__F MIST__PHASE MIST__FN(mist__impl_phase_rayleigh)(void)
 {
     return MIST__FN(mist__phase_make)(1, MIST__C(0), MIST__C(0), MIST__C(1), MIST__C(1));
 }
@@ -2737,7 +3018,7 @@ MIST__F MIST__T MIST__FN(mist__phase_lobe)(MIST__T g, MIST__T a, MIST__T b, MIST
 }
 
 /* Density per steradian.  Domain: u in [-1, 1] (clamped; NaN gives 0). */
-MIST__F MIST__T MIST__FN(mist_phase_eval)(const MIST__PHASE *p, MIST__T u)
+MIST__F MIST__T MIST__FN(mist__impl_phase_eval)(const MIST__PHASE *p, MIST__T u)
 {
     MIST__T r;
     if (!(u == u)) return MIST__C(0);
@@ -2758,7 +3039,7 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_hg)(const MIST__PHASE *p, MIST__T
 #if defined(MIST__W_EXACT)
     if (MIST__FN(mist__gxi_in)(p->g_hg, xi)) return MIST__FN(mist__hg_at)(p->hg, xi);
 #endif
-    return MIST__FN(mist_hg_sample)(p->g_hg, xi);
+    return MIST__FN(mist__impl_hg_sample)(p->g_hg, xi);
 }
 
 #if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
@@ -2787,7 +3068,7 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
     xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
     w = p->w;                                   /* (Rayleigh has w = 1) */
 #ifndef MIST_NO_RAYLEIGH
-    if (p->kind == 1) return MIST__FN(mist_rayleigh_sample)(xi);
+    if (p->kind == 1) return MIST__FN(mist__impl_rayleigh_sample)(xi);
 #endif
     {
         MIST__T x, sg, u;
@@ -2795,8 +3076,8 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
         int dr = MIST__FN(mist__fog_pick)(xi, w, &x, &sg);
         if (sg < MIST__C(0))       /* a fog's xi' within 1024 eps of 1: the
                                     * mirror, unprepared (mist_fog_sample) */
-            return dr ? -MIST__FN(mist_draine_sample)(-p->g, p->alpha, x)
-                      : -MIST__FN(mist_hg_sample)(-p->g_hg, x);
+            return dr ? -MIST__FN(mist__impl_draine_sample)(-p->g, p->alpha, x)
+                      : -MIST__FN(mist__impl_hg_sample)(-p->g_hg, x);
         if (!dr) return MIST__FN(mist__phase_hg)(p, x);
         /* the prepared try inlined here, ahead of the unprepared sampler's
          * tests (one medium: 0.84x the time where this function is inlined
@@ -2842,24 +3123,24 @@ MIST__F MIST__HOT int MIST__FN(mist__gt0)(MIST__T x)
  * function gcc does not inline it in a large translation unit (its
  * unit-growth limits), and a call per HG sample costs ~1.8x the
  * unprepared sampler */
-MIST__F MIST__API_HOT MIST__T MIST__FN(mist_phase_sample)(const MIST__PHASE *p, MIST__T xi)
+MIST__F MIST__API_HOT MIST__T MIST__FN(mist__impl_phase_sample)(const MIST__PHASE *p, MIST__T xi)
 {
-    if (!p) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
+    if (!p) return MIST__FN(mist__impl_hg_sample)(MIST__C(0), xi);
     if (!MIST__FN(mist__gt0)(p->w)) return MIST__FN(mist__phase_hg)(p, xi);
     return MIST__FN(mist__phase_sample_w)(p, xi);
 }
 
 #ifndef MIST_NO_DIR
-MIST__F MIST__V3 MIST__FN(mist_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi);
+MIST__F MIST__V3 MIST__FN(mist__impl_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi);
 
 /* Scattered direction around the propagation direction wi and its pdf
  * (= mist_phase_eval at its cosine; pdf may be NULL), as *_sample_dir. */
-MIST__F MIST__V3 MIST__FN(mist_phase_sample_dir)(const MIST__PHASE *p, MIST__V3 wi,
+MIST__F MIST__V3 MIST__FN(mist__impl_phase_sample_dir)(const MIST__PHASE *p, MIST__V3 wi,
                                                    MIST__T xi1, MIST__T xi2, MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_phase_sample)(p, xi1);
-    if (pdf) *pdf = MIST__FN(mist_phase_eval)(p, u);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_phase_sample)(p, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_phase_eval)(p, u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 #endif
 #undef MIST__PHASE
@@ -2889,7 +3170,7 @@ MIST__F MIST__V3 MIST__FN(mist_phase_sample_dir)(const MIST__PHASE *p, MIST__V3 
 /* (and +inf) is clamped to 50, the end of the fitted range.                */
 /* ======================================================================== */
 
-MIST__F MIST__FOG MIST__FN(mist_fog_from_diameter)(MIST__T d)
+MIST__F MIST__FOG MIST__FN(mist__impl_fog_from_diameter)(MIST__T d)
 {
     MIST__T gh, gd, a, w, l;
     if (!(d > MIST__C(0))) d = MIST__C(0);          /* NaN, d <= 0: d -> 0 */
@@ -2923,7 +3204,7 @@ MIST__F MIST__FOG MIST__FN(mist_fog_from_diameter)(MIST__T d)
         a  = MIST__M(exp)(MIST__C(3.62489) - MIST__C(8.29288) / (d + MIST__C(5.52825)));
         w  = MIST__M(exp)(MIST__C(-0.599085) / (d - MIST__C(0.641583)) - MIST__C(0.665888));
     }
-    return MIST__FN(mist_fog_make)(gh, gd, a, w);
+    return MIST__FN(mist__impl_fog_make)(gh, gd, a, w);
 }
 #endif /* !MIST_NO_FOG */
 
@@ -2959,7 +3240,7 @@ MIST__F MIST__T MIST__FN(mist__pow2inv)(MIST__T m)
  * >= 2e-90), so |v|^2 itself tells 0, NaN and inf apart; one rounding at
  * the end.  One division, for 1/|v| (dividing by the largest component
  * would take three more) */
-MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
+MIST__F MIST__V3 MIST__FN(mist__impl_normalize)(MIST__V3 v)
 {
 #if defined(MIST__W_EXACT)
     MIST__W x = (MIST__W)v.x, y = (MIST__W)v.y, z = (MIST__W)v.z, d = x * x + y * y + z * z, il;
@@ -2990,9 +3271,9 @@ MIST__F MIST__V3 MIST__FN(mist_normalize)(MIST__V3 v)
 /* The direction at cosine u to wi and azimuth 2 pi xi around it.
  * Domain: wi any vector (normalised as mist_normalize), u in [-1, 1],
  * xi in [0, 1]. */
-MIST__F MIST__V3 MIST__FN(mist_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi)
+MIST__F MIST__V3 MIST__FN(mist__impl_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi)
 {
-    MIST__V3 n = MIST__FN(mist_normalize)(wi), t, b, o;
+    MIST__V3 n = MIST__FN(mist__impl_normalize)(wi), t, b, o;
     MIST__T sgn = MIST__M(copysign)(MIST__C(1), n.z + MIST__C(0));   /* -0 + 0 = +0: +1 */
     MIST__T a = MIST__C(-1) / (sgn + n.z), bb = n.x * n.y * a;
     MIST__T s, phi, cp, sp;
@@ -3014,47 +3295,47 @@ MIST__F MIST__V3 MIST__FN(mist_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi)
  * cos(theta) (exact inverse CDF), xi2 the azimuth.  pdf may be NULL.
  * Domain: the phase function's parameters as its sampler's; wi any vector
  * (zero, NaN, inf: (0, 0, 1)); xi1, xi2 in [0, 1] (clamped; NaN as 0). */
-MIST__F MIST__V3 MIST__FN(mist_hg_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+MIST__F MIST__V3 MIST__FN(mist__impl_hg_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
                                                 MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_hg_sample)(g, xi1);
-    if (pdf) *pdf = MIST__FN(mist_hg_eval)(g, u);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_hg_sample)(g, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_hg_eval)(g, u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 
 #ifndef MIST_NO_DRAINE
-MIST__F MIST__V3 MIST__FN(mist_draine_sample_dir)(MIST__T g, MIST__T alpha, MIST__V3 wi,
+MIST__F MIST__V3 MIST__FN(mist__impl_draine_sample_dir)(MIST__T g, MIST__T alpha, MIST__V3 wi,
                                                     MIST__T xi1, MIST__T xi2, MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_draine_sample)(g, alpha, xi1);
-    if (pdf) *pdf = MIST__FN(mist_draine_eval)(g, alpha, u);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_draine_sample)(g, alpha, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_draine_eval)(g, alpha, u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 
-MIST__F MIST__V3 MIST__FN(mist_cs_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+MIST__F MIST__V3 MIST__FN(mist__impl_cs_sample_dir)(MIST__T g, MIST__V3 wi, MIST__T xi1, MIST__T xi2,
                                                 MIST__T *pdf)
 {
-    return MIST__FN(mist_draine_sample_dir)(g, MIST__C(1), wi, xi1, xi2, pdf);
+    return MIST__FN(mist__impl_draine_sample_dir)(g, MIST__C(1), wi, xi1, xi2, pdf);
 }
 #endif
 
 #ifndef MIST_NO_RAYLEIGH
-MIST__F MIST__V3 MIST__FN(mist_rayleigh_sample_dir)(MIST__V3 wi, MIST__T xi1, MIST__T xi2,
+MIST__F MIST__V3 MIST__FN(mist__impl_rayleigh_sample_dir)(MIST__V3 wi, MIST__T xi1, MIST__T xi2,
                                                       MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_rayleigh_sample)(xi1);
-    if (pdf) *pdf = MIST__FN(mist_rayleigh_eval)(u);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_rayleigh_sample)(xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_rayleigh_eval)(u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 #endif
 
 #ifndef MIST_NO_FOG
-MIST__F MIST__V3 MIST__FN(mist_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
+MIST__F MIST__V3 MIST__FN(mist__impl_fog_sample_dir)(MIST__FOG fog, MIST__V3 wi,
                                                  MIST__T xi1, MIST__T xi2, MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_fog_sample)(fog, xi1);
-    if (pdf) *pdf = MIST__FN(mist_fog_eval)(fog, u);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_fog_sample)(fog, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_fog_eval)(fog, u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 #endif
 #endif /* !MIST_NO_DIR */
@@ -3085,7 +3366,7 @@ MIST__F void MIST__FN(mist__dirac_n)(MIST__T g, const MIST__T *in, MIST__T *out,
 }
 
 /* HG density per steradian of each in[i] = u: mist_hg_eval(g, u). */
-MIST__F void MIST__FN(mist_hg_eval_n)(MIST__T g, const MIST__T *in, MIST__T *out, size_t n)
+MIST__F void MIST__FN(mist__impl_hg_eval_n)(MIST__T g, const MIST__T *in, MIST__T *out, size_t n)
 {
     MIST__T k;
     g = MIST__FN(mist__g)(g);
@@ -3100,7 +3381,7 @@ MIST__F void MIST__FN(mist_hg_eval_n)(MIST__T g, const MIST__T *in, MIST__T *out
 }
 
 /* HG sample of each in[i] = xi: mist_hg_sample(g, xi). */
-MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *out, size_t n)
+MIST__F void MIST__FN(mist__impl_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *out, size_t n)
 {
     size_t i;
     g = MIST__FN(mist__g)(g);
@@ -3128,13 +3409,13 @@ MIST__F void MIST__FN(mist_hg_sample_n)(MIST__T g, const MIST__T *in, MIST__T *o
 #else
     /* double-double by Dekker's product: the loop was faster than the
      * vectorised kernel (see mist_rayleigh_sample_n) */
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(g, in[i]);
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_hg_sample)(g, in[i]);
 #endif
 }
 
 #ifndef MIST_NO_DRAINE
 /* Draine density per steradian of each in[i] = u: mist_draine_eval. */
-MIST__F void MIST__FN(mist_draine_eval_n)(MIST__T g, MIST__T alpha, const MIST__T *in,
+MIST__F void MIST__FN(mist__impl_draine_eval_n)(MIST__T g, MIST__T alpha, const MIST__T *in,
                                           MIST__T *out, size_t n)
 {
     MIST__T k, c0, c1, cn;
@@ -3153,7 +3434,7 @@ MIST__F void MIST__FN(mist_draine_eval_n)(MIST__T g, MIST__T alpha, const MIST__
 }
 
 #ifndef MIST_NO_FOG
-MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
                                            MIST__T *out, size_t n);
 #endif
 
@@ -3167,7 +3448,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
  * in float, 1.2e-3 in double; see "Prepared phase functions").  Without
  * the prepared functions (MIST_NO_FOG) and in CUDA device code (a 1.6-3.1
  * KB table per thread): always the loop. */
-MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST__T *in,
+MIST__F void MIST__FN(mist__impl_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST__T *in,
                                             MIST__T *out, size_t n)
 {
     size_t i;
@@ -3181,20 +3462,20 @@ MIST__F void MIST__FN(mist_draine_sample_n)(MIST__T g, MIST__T alpha, const MIST
 #endif
 #if !defined(MIST_NO_FOG) && !defined(__CUDA_ARCH__)
     if (n != 0 && n >= (size_t)MIST_DRAINE_PREPARE_N) {
-        MIST__FN(mist_phase) p = MIST__FN(mist_phase_draine)(g, alpha);
-        MIST__FN(mist_phase_sample_n)(&p, in, out, n);
+        MIST__FN(mist_phase) p = MIST__FN(mist__impl_phase_draine)(g, alpha);
+        MIST__FN(mist__impl_phase_sample_n)(&p, in, out, n);
         return;
     }
 #endif
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_draine_sample)(g, alpha, in[i]);
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_draine_sample)(g, alpha, in[i]);
 }
 #endif /* !MIST_NO_DRAINE */
 
 #ifndef MIST_NO_RAYLEIGH
 /* Rayleigh density per steradian of each in[i] = u: mist_rayleigh_eval. */
-MIST__F void MIST__FN(mist_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, size_t n)
+MIST__F void MIST__FN(mist__impl_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, size_t n)
 {
-    MIST__BLOCKS(y_[j_] = MIST__FN(mist_rayleigh_eval)(x_[j_]))   /* branch-free */
+    MIST__BLOCKS(y_[j_] = MIST__FN(mist__impl_rayleigh_eval)(x_[j_]))   /* branch-free */
 }
 
 /* Rayleigh sample of each in[i] = xi: mist_rayleigh_sample (float:
@@ -3202,7 +3483,7 @@ MIST__F void MIST__FN(mist_rayleigh_eval_n)(const MIST__T *in, MIST__T *out, siz
  * also by Dekker's product where fma is no instruction: 15.6 -> 9.5 ns an
  * element with SSE2, 5.8 with AVX, gcc 12 -O2/-O3, measured; the HG batch
  * so vectorised was slower than its loop, 14.1 against 12.2 ns). */
-MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, size_t n)
+MIST__F void MIST__FN(mist__impl_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, size_t n)
 {
 #if defined(MIST__W_EXACT)
     volatile MIST__T z0 = 0;
@@ -3216,7 +3497,7 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
                  y_[j_] = MIST__FN(mist__clamp11)(MIST__FN(mist__rayleigh_udd)(x)))
 #else
     size_t i;
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_rayleigh_sample)(in[i]);
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_rayleigh_sample)(in[i]);
 #endif
 }
 #endif /* !MIST_NO_RAYLEIGH */
@@ -3224,7 +3505,7 @@ MIST__F void MIST__FN(mist_rayleigh_sample_n)(const MIST__T *in, MIST__T *out, s
 #ifndef MIST_NO_FOG
 /* Prepared density of each in[i] = u: mist_phase_eval(p, u).  One lobe
  * (HG, Draine, CS, Rayleigh, a fog whose lobes share g) branch-free. */
-MIST__F void MIST__FN(mist_phase_eval_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+MIST__F void MIST__FN(mist__impl_phase_eval_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
                                          MIST__T *out, size_t n)
 {
     size_t i;
@@ -3237,7 +3518,7 @@ MIST__F void MIST__FN(mist_phase_eval_n)(const MIST__FN(mist_phase) *p, const MI
                      y_[j_] = u == u ? r : MIST__C(0))
         return;
     }
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_eval)(p, in[i]);
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_phase_eval)(p, in[i]);
 }
 
 #if defined(MIST__W_EXACT) && !defined(MIST_NO_DRAINE)
@@ -3324,12 +3605,12 @@ MIST__F MIST__HOT double mist__bsel(int c, double x, double y)
     return x;
 }
 #endif
-MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
                                            MIST__T *out, size_t n)
 {
     size_t i;
     if (p && p->kind == 0 && p->w <= MIST__C(0)) {
-        MIST__FN(mist_hg_sample_n)(p->g_hg, in, out, n);
+        MIST__FN(mist__impl_hg_sample_n)(p->g_hg, in, out, n);
         return;
     }
 #if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
@@ -3417,7 +3698,7 @@ MIST__F void MIST__FN(mist_phase_sample_n)(const MIST__FN(mist_phase) *p, const 
         return;
     }
 #endif
-    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_phase_sample)(p, in[i]);
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_phase_sample)(p, in[i]);
 }
 #endif /* !MIST_NO_FOG */
 
@@ -3555,7 +3836,7 @@ MIST__F size_t MIST__FN(mist__tab_layout)(size_t n, int channels, size_t *o)
 }
 
 /* Bytes a table of n nodes and `channels` channels needs (0: see above). */
-MIST__F size_t MIST__FN(mist_tab_bytes)(size_t n, int channels)
+MIST__F size_t MIST__FN(mist__impl_tab_bytes)(size_t n, int channels)
 {
     size_t o[8];
     return MIST__FN(mist__tab_layout)(n, channels, o);
@@ -3578,7 +3859,7 @@ MIST__F void MIST__FN(mist__tab_acc)(MIST__TW *s, MIST__TW *e, MIST__TW y)
 /* Builds the table in t's `bytes` bytes from mu[n] and p[n * channels]
  * (node-major: p[i * channels + c]).  Returns 0, or MIST_TAB_E* (see the
  * section; nothing written past bytes). */
-MIST__F int MIST__FN(mist_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *mu,
+MIST__F int MIST__FN(mist__impl_tab_init)(MIST__TAB *t, size_t bytes, const MIST__T *mu,
                                     const MIST__T *p, size_t n, int channels)
 {
     size_t o[8], need, i, k, c, C, G, last;
@@ -3795,7 +4076,7 @@ MIST__F MIST__T MIST__FN(mist__tab_ev)(const MIST__TAB *t, MIST__T u, MIST__T *c
 /* Density per steradian of the sampling density (the mean of the
  * normalised channels) at u; each channel's into channel[0..C) (channel
  * may be NULL).  Domain: see the section. */
-MIST__F MIST__T MIST__FN(mist_tab_eval)(const MIST__TAB *t, MIST__T u, MIST__T *channel)
+MIST__F MIST__T MIST__FN(mist__impl_tab_eval)(const MIST__TAB *t, MIST__T u, MIST__T *channel)
 {
     if (!MIST__FN(mist__tab_ok)(t)) {
         MIST__T r = u == u ? MIST__C(MIST__INV4PI) : MIST__C(0);
@@ -3916,21 +4197,21 @@ MIST__F MIST__T MIST__FN(mist__tab_sm)(const MIST__TAB *t, MIST__T xi)
 
 /* u = cos theta from xi: the exact inverse CDF of the sampling density
  * (monotone in xi).  Domain: see the section. */
-MIST__F MIST__T MIST__FN(mist_tab_sample)(const MIST__TAB *t, MIST__T xi)
+MIST__F MIST__T MIST__FN(mist__impl_tab_sample)(const MIST__TAB *t, MIST__T xi)
 {
-    if (!MIST__FN(mist__tab_ok)(t)) return MIST__FN(mist_hg_sample)(MIST__C(0), xi);
+    if (!MIST__FN(mist__tab_ok)(t)) return MIST__FN(mist__impl_hg_sample)(MIST__C(0), xi);
     return MIST__FN(mist__tab_sm)(t, MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1)));
 }
 
 #ifndef MIST_NO_DIR
 /* Scattered direction around the propagation direction wi and its pdf
  * (mist_tab_eval at its cosine; pdf may be NULL), as *_sample_dir. */
-MIST__F MIST__V3 MIST__FN(mist_tab_sample_dir)(const MIST__TAB *t, MIST__V3 wi, MIST__T xi1,
+MIST__F MIST__V3 MIST__FN(mist__impl_tab_sample_dir)(const MIST__TAB *t, MIST__V3 wi, MIST__T xi1,
                                                  MIST__T xi2, MIST__T *pdf)
 {
-    MIST__T u = MIST__FN(mist_tab_sample)(t, xi1);
-    if (pdf) *pdf = MIST__FN(mist_tab_eval)(t, u, MIST__NULL);
-    return MIST__FN(mist_dir_from_cos)(wi, u, xi2);
+    MIST__T u = MIST__FN(mist__impl_tab_sample)(t, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_tab_eval)(t, u, MIST__NULL);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
 }
 #endif
 
@@ -3939,12 +4220,12 @@ MIST__F MIST__V3 MIST__FN(mist_tab_sample_dir)(const MIST__TAB *t, MIST__V3 wi, 
  * in[i]), bit for bit (the same expressions, the table's check once).
  * Float: blocks of MIST__BLK (see the section's float eval); double: a
  * loop (the double eval's divisions and the sampler's wide type W). */
-MIST__F void MIST__FN(mist_tab_eval_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
+MIST__F void MIST__FN(mist__impl_tab_eval_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
                                        size_t n)
 {
     size_t i;
     if (!MIST__FN(mist__tab_ok)(t)) {
-        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_tab_eval)(t, in[i], MIST__NULL);
+        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_tab_eval)(t, in[i], MIST__NULL);
         return;
     }
     if (!MIST__DBL && t->n - 1 < (size_t)0x7fffffff) {
@@ -4003,12 +4284,12 @@ MIST__F void MIST__FN(mist_tab_eval_n)(const MIST__TAB *t, const MIST__T *in, MI
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__tab_ev)(t, in[i], MIST__NULL);
 }
 
-MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
+MIST__F void MIST__FN(mist__impl_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, MIST__T *out,
                                          size_t n)
 {
     size_t i;
     if (!MIST__FN(mist__tab_ok)(t)) {
-        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist_hg_sample)(MIST__C(0), in[i]);
+        for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_hg_sample)(MIST__C(0), in[i]);
         return;
     }
     if (!MIST__DBL && t->n - 1 < (size_t)0x7fffffff) {
@@ -4072,7 +4353,7 @@ MIST__F void MIST__FN(mist_tab_sample_n)(const MIST__TAB *t, const MIST__T *in, 
             for (j = 0; j < len; ++j) out[i0 + j] = yb[j];
             for (j = 0; j < len; ++j)
                 if (fb[j])
-                    out[i0 + j] = MIST__FN(mist_tab_sample)(t, xb[j]);
+                    out[i0 + j] = MIST__FN(mist__impl_tab_sample)(t, xb[j]);
         }
         return;
     }
@@ -4588,7 +4869,7 @@ MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
 {
     MIST__T d = v.x * v.x + v.y * v.y + v.z * v.z - MIST__C(1);
     if (d <= MIST__C(16) * MIST__EPS && d >= MIST__C(-16) * MIST__EPS) return v;
-    return MIST__FN(mist_normalize)(v);
+    return MIST__FN(mist__impl_normalize)(v);
 }
 
 /* The integral of the density factor  density exp(-(y(t) - base)/H)  along
@@ -4596,7 +4877,7 @@ MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
  * component is its extinction coefficient times this.  w is the vertical
  * component of the unit direction, length may be +inf.  Bad input (see the
  * section comment) gives 0. */
-MIST__F MIST__T MIST__FN(mist_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIST__T w,
+MIST__F MIST__T MIST__FN(mist__impl_hfog_column)(const MIST__HFOG *fog, MIST__T y, MIST__T w,
                                            MIST__T length)
 {
     MIST__T d0, H;
@@ -4643,7 +4924,7 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
  * `dir` over `length` (+inf allowed): the background seen through the fog
  * becomes  background * transmittance + inscatter.  Either pointer may be
  * NULL.  See the section comment for the model, the domain and bad input. */
-MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
                                       MIST__T length, MIST__RGB *transmittance,
                                       MIST__RGB *inscatter)
 {
@@ -4670,7 +4951,7 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
         if (inscatter) {
             MIST__V3 l = MIST__FN(mist__unit)(fog->sun_dir);
             MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
-            pR = MIST__FN(mist_rayleigh_eval)(u);
+            pR = MIST__FN(mist__impl_rayleigh_eval)(u);
             /* a Dirac lobe on its peak: +inf counts as the largest finite
              * value, clamped here, before phi1(tau), 1 - T or phi1(z)
              * multiply it (else the factor is lost: 5% at tau = 0.1) */
@@ -4751,31 +5032,31 @@ MIST__F void MIST__FN(mist_hfog_eval)(const MIST__HFOG *fog, MIST__V3 origin, MI
 
 /* Transmittance alone (per colour band).  Domain: as mist_hfog_eval (and
  * the two below). */
-MIST__F MIST__RGB MIST__FN(mist_hfog_transmittance)(const MIST__HFOG *fog, MIST__V3 origin,
+MIST__F MIST__RGB MIST__FN(mist__impl_hfog_transmittance)(const MIST__HFOG *fog, MIST__V3 origin,
                                                     MIST__V3 dir, MIST__T length)
 {
     MIST__RGB t;
-    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, MIST__NULL);
+    MIST__FN(mist__impl_hfog_eval)(fog, origin, dir, length, &t, MIST__NULL);
     return t;
 }
 
 /* In-scattered radiance alone. */
-MIST__F MIST__RGB MIST__FN(mist_hfog_inscatter)(const MIST__HFOG *fog, MIST__V3 origin,
+MIST__F MIST__RGB MIST__FN(mist__impl_hfog_inscatter)(const MIST__HFOG *fog, MIST__V3 origin,
                                                 MIST__V3 dir, MIST__T length)
 {
     MIST__RGB l;
-    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, MIST__NULL, &l);
+    MIST__FN(mist__impl_hfog_eval)(fog, origin, dir, length, MIST__NULL, &l);
     return l;
 }
 
 /* background * transmittance + inscatter: the radiance that reaches
  * `origin` from a surface at `length` along `dir` (+inf: the sky) of
  * radiance `background`. */
-MIST__F MIST__RGB MIST__FN(mist_hfog_apply)(const MIST__HFOG *fog, MIST__V3 origin,
+MIST__F MIST__RGB MIST__FN(mist__impl_hfog_apply)(const MIST__HFOG *fog, MIST__V3 origin,
                                             MIST__V3 dir, MIST__T length, MIST__RGB background)
 {
     MIST__RGB t, l;
-    MIST__FN(mist_hfog_eval)(fog, origin, dir, length, &t, &l);
+    MIST__FN(mist__impl_hfog_eval)(fog, origin, dir, length, &t, &l);
     l.r += background.r * t.r;
     l.g += background.g * t.g;
     l.b += background.b * t.b;
@@ -4842,7 +5123,7 @@ MIST__F MIST__T MIST__FN(mist__hstart)(MIST__T st, const MIST__HRAY *g, int sx, 
  * most 64).  The transmittance is exact (closed form); the in-scatter is
  * within *bound of the exact value (per channel, rounding included); any
  * output pointer may be NULL. */
-MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MIST__V3 origin,
+MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int n, MIST__V3 origin,
                                              MIST__V3 dir, MIST__T length, int pieces,
                                              MIST__RGB *transmittance, MIST__RGB *inscatter,
                                              MIST__RGB *bound)
@@ -4888,7 +5169,7 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
     {   /* lights, phase functions */
         MIST__V3 l = MIST__FN(mist__unit)(layers[0].sun_dir);
         MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
-        pR = MIST__FN(mist_rayleigh_eval)(u);
+        pR = MIST__FN(mist__impl_rayleigh_eval)(u);
         for (k = 0; k < n; ++k) pM[k] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&layers[k].mie_phase, u));
         E[0]  = layers[0].sun.r;     E[1]  = layers[0].sun.g;     E[2]  = layers[0].sun.b;
         La[0] = layers[0].ambient.r; La[1] = layers[0].ambient.g; La[2] = layers[0].ambient.b;
@@ -5571,7 +5852,7 @@ MIST__F void MIST__FN(mist__seg_w)(MIST__T p, MIST__T q, MIST__T *w0, MIST__T *w
  * mist_segment_linear(2, 2, INFINITY, 0, 1, &t) is 5.1e307, not +inf);
  * length NaN or <= 0 -> 0 (transmittance 1); length +inf: the limit,
  * s0/k0 (transmittance 0; +inf if k0 = 0, unless s0 = 0). */
-MIST__F MIST__T MIST__FN(mist_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0, MIST__T s1,
+MIST__F MIST__T MIST__FN(mist__impl_segment_linear)(MIST__T k0, MIST__T k1, MIST__T s0, MIST__T s1,
                                               MIST__T length, MIST__T *transmittance)
 {
     MIST__T p, q, w0, w1, tr = MIST__C(1), r = MIST__C(0);
