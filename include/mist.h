@@ -4603,7 +4603,10 @@ MIST__F void MIST__FN(mist_hfog_layers_eval)(const MIST__HFOG *layers, int n, MI
                             if (fi || ih < imn) imn = ih;
                             if (fi || ih > imx) imx = ih;
                             fi = 0;
-                            e0[k] = st[k][c] * seg[k].rho0;
+                            e0[k] = st[k][c] * seg[k].rho0;   /* (a layer whose
+                             * density at the start underflows may still dominate
+                             * later: not taken) */
+                            if (!(e0[k] >= MIST__TMIN)) okw = 0;
                             bk[k] = -w * ih;
                             ez0 += e0[k];
                         }

@@ -1982,6 +1982,42 @@ static void test_ref_exp(void)
              "ref_exp: e^0 = 1, e^-20000 = 0, e^12000 = inf");
 }
 
+
+/* Random layers (2 to 4: bases, densities, scale heights 3 m to 10 km,
+ * coefficients, albedos, phase functions), lights, cameras up to 20 km,
+ * rays of every slope to 1e-4, lengths 10 m to infinity, 1 to 64 pieces:
+ * the in-scatter within its bound (ml_case).  A layer whose density at a
+ * piece's start underflows may dominate further down the ray: a
+ * weight-aware bound that leaves it out misses by up to 0.2 of the value
+ * in 3 of these 500 cases. */
+static void test_layers_random(long n, unsigned seed)
+{
+    mt_rng r; long it; static const int pp[] = { 1, 2, 3, 4, 8, 16, 64 };
+    r.s = 0x9e3779b97f4a7c15ULL * (seed + 1);
+    for (it = 0; it < n; ++it) {
+        mist_hfog a[4]; int nl = 2 + (int)(mt_uniform(&r) * 3), k, p = pp[(int)(mt_uniform(&r) * 7)];
+        double y, w, s, ang;
+        for (k = 0; k < nl; ++k) {
+            double R = mt_uniform(&r) < 0.3 ? 0 : pow(10, -7 + 3 * mt_uniform(&r));
+            double M = pow(10, -6 + 4 * mt_uniform(&r));
+            a[k] = layer(-500 + 2500 * mt_uniform(&r), pow(10, -1 + 2 * mt_uniform(&r)),
+                         pow(10, 0.5 + 3.5 * mt_uniform(&r)), R, 2 * R, 4 * R,
+                         M, M * (0.5 + mt_uniform(&r)), M, 0.5 + 0.5 * mt_uniform(&r),
+                         -0.8 + 1.7 * mt_uniform(&r));
+        }
+        ang = -0.2 + 1.7 * mt_uniform(&r);
+        a[0].sun_dir.x = cos(ang); a[0].sun_dir.y = sin(ang); a[0].sun_dir.z = 0;
+        a[0].sun.r = 10 * mt_uniform(&r); a[0].sun.g = 10 * mt_uniform(&r); a[0].sun.b = 10 * mt_uniform(&r);
+        a[0].ambient.r = mt_uniform(&r); a[0].ambient.g = mt_uniform(&r); a[0].ambient.b = mt_uniform(&r);
+        a[0].sun_extinction = mt_uniform(&r) < 0.5;
+        y = -200 + 20200 * pow(mt_uniform(&r), 2);
+        w = (mt_uniform(&r) < 0.5 ? -1 : 1) * pow(10, -4 * mt_uniform(&r));
+        s = mt_uniform(&r) < 0.3 ? INFINITY : pow(10, 1 + 5 * mt_uniform(&r));
+        ml_case(a, nl, y, w, s, &p, 1, "random");
+    }
+    printf("random layers: %ld cases, worst error/bound %.3f\n", n, ml_worst_ratio);
+}
+
 int main(int argc, char **argv)
 {
     gl_init();
@@ -1991,7 +2027,7 @@ int main(int argc, char **argv)
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
     if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny();
-                                          test_layers_far_below(); }
+                                          test_layers_far_below(); test_layers_random(500, 0); }
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long();
                                           test_segment_inf_source(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }
