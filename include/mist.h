@@ -5376,7 +5376,7 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                 MIST__T gj, om, osc = MIST__C(0), cmin[2], cmax[2];
                 MIST__T wjs = (MIST__T)INFINITY, wsd = MIST__C(0);   /* the weight-aware
                                              * bound's sun part and share difference */
-                int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0;
+                int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0, tie;
                 for (k = 0; k < n; ++k) {
                     wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = le[k] = MIST__C(0);   /* (set below
                                              * where used: gcc 12 -O2/-O3 -Wall
@@ -5436,10 +5436,10 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                     int kx = ref;
                     for (k = 0; k < n; ++k) {
                         MIST__T e;
-                        if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
+                        if (k == ref || !ok[k] || !(st[k][c] > MIST__C(0))) continue;
                         e = MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c, y + w * tb[j],
                                                  MIST__NULL);
-                        if (k == ref || e > lbest) { lbest = e; kx = k; }
+                        if (e > lbest) { lbest = e; kx = k; }
                     }
                     ref = kx;
                 }
@@ -5455,9 +5455,16 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                         wk[k] = MIST__FN(mist__ldexp)(wk[k], ke[k] - emax);
                     }
                 }
+                /* logs beyond the type's range (a camera ~1e38 scale heights
+                 * from a layer in float): the layers at +inf cannot be
+                 * ordered, so they share equally and the shares' error is
+                 * taken as unbounded (the bound then caps at the lights'
+                 * whole range below) */
+                tie = unb == 2 && !(lmax <= MIST__BIG);
                 for (k = 0; k < n; ++k) {
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                    if (unb == 2) wk[k] = lk[k] == lmax ? MIST__C(1) : MIST__M(exp)(lk[k] - lmax);
+                    if (tie) wk[k] = lk[k] == lmax ? MIST__C(1) : MIST__C(0);
+                    else if (unb == 2) wk[k] = lk[k] == lmax ? MIST__C(1) : MIST__M(exp)(lk[k] - lmax);
                     if (!(wk[k] >= MIST__C(0))) wk[k] = MIST__C(0);
                     wsum += wk[k];
                 }
@@ -5467,7 +5474,9 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                  * fuzzer: a 2e-40 share of a large light, 1200 eps off) */
                 for (k = 0; k < n; ++k) {
                     if (!ok[k] || !(st[k][c] > MIST__C(0))) continue;
-                    if (unb == 2) {
+                    if (tie) {
+                        if (wk[k] > MIST__C(0)) { famb += ca[k] / wsum; fsun += cu[k] / wsum; }
+                    } else if (unb == 2) {
                         famb += MIST__FN(mist__expmul)(ca[k], MIST__C(1), MIST__C(1), MIST__C(1), wsum,
                                                        lmax - lk[k], MIST__C(0));
                         fsun += MIST__FN(mist__expmul)(cu[k], MIST__C(1), MIST__C(1), MIST__C(1), wsum,
@@ -5479,7 +5488,8 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                                                          MIST__C(0), MIST__C(0), ke[k] - emax);
                     }
                 }
-                if (unb == 2)
+                if (tie) dsh = MIST__C(1);
+                else if (unb == 2)
                     /* the shares' rounding: w_k = e^(lk - lmax) within
                      * e^+-x, x = le[k] + eps (2 + |lk - lmax|) (exp and its
                      * argument); dsh = sum_k f_k (e^x - 1) and gsh = sum_k
@@ -5684,10 +5694,10 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                  * sum_j f_j e^-h_j within dsh of 1, so F = sum c_k f_k moves
                  * by at most (gsh + F dsh) / (1 - dsh), and never by more
                  * than c_max - c_min.  Proportional to the other layers'
-                 * shares, not to the rounding of their logs: that was 4 x
-                 * the largest le[k] of the whole piece (a camera 1e8 scale
-                 * heights below the base: 191 times the value in float,
-                 * 3e9 eps in double, where the value is right to 2 eps). */
+                 * shares, not to the rounding of their logs (4 x the largest
+                 * le[k] of the whole piece would be 3e9 eps in double for a
+                 * camera 1e8 scale heights below the base, where the value
+                 * is right to 2 eps). */
                 if (unb == 2) {
                     MIST__T ea = dsh < MIST__C(1) ? (gsh[0] + famb * dsh) / (MIST__C(1) - dsh)
                                                   : (MIST__T)INFINITY;
