@@ -91,6 +91,7 @@ static void make_tables(data *T, int *nt)
     for (i = 1; i < d->n - 1; ++i)
         d->mu[i] = floor((d->mu[i] + 0.6 * (mt_uniform(&r) - 0.5) * 2.0 / (d->n - 1))
                          * 1048576.0) / 1048576.0;
+    d->mu[0] = -1; d->mu[d->n - 1] = 1;   /* exact under -ffast-math's reciprocals too */
     for (i = 0; i < d->n; ++i)
         for (c = 0; c < 3; ++c) {
             double v = mt_uniform(&r), w = mt_uniform(&r);
