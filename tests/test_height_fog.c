@@ -2027,7 +2027,7 @@ int main(int argc, char **argv)
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
     if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny();
-                                          test_layers_far_below(); test_layers_random(500, 0); }
+                                          test_layers_far_below(); test_layers_random(mt_scale(500, 60), 0); }
     if (want(argc, argv, "segment")) { test_segment(0); test_segment(1); test_segment_long();
                                           test_segment_inf_source(); }
     if (want(argc, argv, "tiny")) { test_tiny_cases(); test_tiny_h(); }

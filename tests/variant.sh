@@ -4,8 +4,10 @@
 # the C compiler CC, CMAKE_C_FLAGS=FLAGS (build type "Variant": no other
 # optimisation flags), MIST_ROBUSTNESS=ON (the stress and replay tests) and
 # MIST_VARIANTS=OFF, MIST_FUZZ_SECONDS=0 (no recursion, no libFuzzer runs),
-# then runs every ctest test of that build except the compile tests, the
-# consumer test (neither depends on FLAGS) and those whose names match the
+# then runs every ctest test of that build except those that choose their
+# own compiler flags (the compile tests, the consumer test, doc_blocks,
+# fastmath_* and mie_fastmath: FLAGS change nothing there) and those whose
+# names match the
 # regular expression EXCLUDE ("" for none), with
 # MIST_STRESS_CALLS=STRESS_CALLS for the stress test and MIST_TEST_QUICK=QUICK
 # (default 1: full size) for test_accuracy, test_chi2, test_height_fog and
@@ -29,13 +31,13 @@ echo "variant $name: $cc $flags"
 t0=$(date +%s)
 cmake -S "$src" -B "$bin" -G "$gen" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Variant \
       -DCMAKE_C_FLAGS="$flags" -DMIST_BUILD_EXAMPLES=OFF -DMIST_ROBUSTNESS=ON \
-      -DMIST_VARIANTS=OFF -DMIST_FUZZ_SECONDS=0 -DMIST_TEST_NATIVE="$native" >"$bin/configure.log" 2>&1 ||
+      -DMIST_VARIANTS=OFF -DMIST_SUBBUILD=ON -DMIST_FUZZ_SECONDS=0 -DMIST_TEST_NATIVE="$native" >"$bin/configure.log" 2>&1 ||
     { cat "$bin/configure.log"; exit 1; }
 cmake --build "$bin" -j 2 >"$bin/build.log" 2>&1 || { cat "$bin/build.log"; exit 1; }
 t1=$(date +%s)
 echo "variant $name: configured and built in $((t1 - t0)) s"
 cd "$bin" || exit 1
-skip="^(compile_.*|consumer)\$"
+skip="^(compile_.*|consumer|doc_blocks|fastmath_.*|mie_fastmath)\$"
 [ -n "$exclude" ] && skip="$skip|$exclude"
 MIST_STRESS_CALLS=$calls MIST_TEST_QUICK=$quick ctest -E "$skip" -j 2 --output-on-failure
 rc=$?
