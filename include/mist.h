@@ -3574,10 +3574,9 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
 /* Prepared sample of each in[i] = xi: mist_phase_sample(p, xi).  HG as
  * mist_hg_sample_n; in double where fma is one instruction, Draine and
  * Cornette-Shanks vectorised as said below the float code
- * (./build/mist_bench, g .5, alpha 17: 69 -> 18.5 ns a sample, 4.2x the
- * scalar loop, 4.4x with the pending elements finished from their step; the
- * vectorised step was a branch in gcc's eyes until mist__draine_dd1 took
- * its selects apart); in float, Draine and Cornette-Shanks vectorised: the
+ * (./build/mist_bench, g .5, alpha 17: ~4x the scalar loop; the step's
+ * selects are written apart in mist__draine_dd1, which gcc would otherwise
+ * turn into a branch); in float, Draine and Cornette-Shanks vectorised: the
  * start table and one straight-line Newton step in double
  * (mist__draine_step) for a block; the elements that step did not finish
  * (4-5% at alpha 17: the table intervals around u = 0) wait in a pending
