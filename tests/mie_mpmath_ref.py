@@ -109,8 +109,11 @@ def amplitudes(x, a, b, mu):
     return s1, s2
 
 def reference_near1(x, mr, mi, mus):
-    """As reference(), m close to 1: Q_sca, g, Q_back and S1, S2 at mus."""
-    n_max = int(x + 4 * x ** (1.0 / 3) + 40)
+    """As reference(), m close to 1: Q_sca, g, Q_back and S1, S2 at mus.
+    Summed to x + 8 x^(1/3) + 40 terms: at x = 1e5, m = 1 + 1e-9 the term
+    at x + 4 x^(1/3) + 40 is still 2e-9 of S1(-1) (which cancels to 1e-5
+    of its terms' moduli); past x + 8 x^(1/3) + 40 below 1e-20 of it."""
+    n_max = int(x + 8 * x ** (1.0 / 3) + 40)
     lo = min(x, math.hypot(mr, mi) * x)
     loss = sum(2 * math.log10((k + 1.0) / lo) for k in range(1, n_max + 1) if k + 1 > lo)
     dm = abs(complex(mr, mi) - 1)
