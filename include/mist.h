@@ -5768,6 +5768,9 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
             if (lx[c]) {                        /* the lights' scale, back */
                 ls[c] = MIST__FN(mist__ldexp)(ls[c], lx[c]);
                 bd[c] = MIST__FN(mist__ldexp)(bd[c], lx[c]);
+                /* an in-scatter beyond the range is the largest finite value
+                 * (as an infinite light counts), its bound then +inf */
+                if (!(ls[c] <= MIST__BIG)) { ls[c] = MIST__BIG; bd[c] = (MIST__T)INFINITY; }
             }
         }
     }
