@@ -5376,6 +5376,7 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                 MIST__T wjs = (MIST__T)INFINITY, wsd = MIST__C(0);   /* the weight-aware
                                              * bound's sun part and share difference */
                 int ke[MIST_HFOG_MAX_LAYERS], first = 1, ref = 0, emax = 0, unb = 0, have = 0, tie;
+                int hv = 0;                       /* lmax set */
                 for (k = 0; k < n; ++k) {
                     wk[k] = lk[k] = wm[k] = cu[k] = ca[k] = le[k] = MIST__C(0);   /* (set below
                                              * where used: gcc 12 -O2/-O3 -Wall
@@ -5448,7 +5449,10 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
                         lk[k] = k == ref ? MIST__C(0)
                               : MIST__FN(mist__lrel)(layers, st, sx, H, lnd, k, ref, c,
                                                      y + w * tb[j], &le[k]);
-                        if (k == ref || lk[k] > lmax) lmax = lk[k];
+                        if (lk[k] == lk[k] && (!hv || lk[k] > lmax)) {   /* NaN: unordered,
+                                                                           * no share */
+                            lmax = lk[k]; hv = 1;
+                        }
                     } else {
                         wm[k] = wk[k];
                         wk[k] = MIST__FN(mist__ldexp)(wk[k], ke[k] - emax);
@@ -5768,9 +5772,9 @@ MIST__F void MIST__FN(mist__impl_hfog_layers_eval)(const MIST__HFOG *layers, int
             if (lx[c]) {                        /* the lights' scale, back */
                 ls[c] = MIST__FN(mist__ldexp)(ls[c], lx[c]);
                 bd[c] = MIST__FN(mist__ldexp)(bd[c], lx[c]);
-                /* an in-scatter beyond the range is the largest finite value
-                 * (as an infinite light counts), its bound then +inf */
-                if (!(ls[c] <= MIST__BIG)) { ls[c] = MIST__BIG; bd[c] = (MIST__T)INFINITY; }
+                /* an in-scatter beyond the range is +inf (as mist_hfog_eval's),
+                 * and its bound then +inf too */
+                if (!(ls[c] <= MIST__BIG)) bd[c] = (MIST__T)INFINITY;
             }
         }
     }
