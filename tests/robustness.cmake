@@ -104,8 +104,8 @@ endforeach()
 #             batch forms whose code depends on n there: test_batch.c),
 #             which the stress run's batches (n 1 to 80) do not reach),
 #             with
-#             MIST_TEST_QUICK=MIST_VARIANT_QUICK (8): accuracy, chi2 and
-#             height_fog draw an eighth of their random points and samples,
+#             MIST_TEST_QUICK=MIST_VARIANT_QUICK (16): accuracy, chi2 and
+#             height_fog draw a sixteenth of their random points and samples,
 #             but never below each count's floor (mt_scale's lo: chi2 keeps
 #             half the scalar and a quarter of the direction samples, where
 #             its negative controls are still rejected, see test_chi2.c),
@@ -126,10 +126,10 @@ endforeach()
 #             Not with -march=native: see FAST MATH (one bit-for-bit check
 #             of test_domain fails there).  Every test but the *_native
 #             builds (fast math with FMA: the main build's fastmath_* tests
-#             and the mie_fastmath test), quick 8.
+#             and the mie_fastmath test), quick 16.
 #   O3        -O3 -march=native -ffp-contract=fast (contraction wherever
 #             the host has FMA): every test (as asan; its *_native builds
-#             would repeat its own flags) but accuracy_nold, quick 8: where
+#             would repeat its own flags) but accuracy_nold, quick 16: where
 #             fma is one instruction MIST_NO_LONG_DOUBLE changes only the
 #             double Draine samplers' long double fallback, taken after 64
 #             unsettled double-double steps or a NaN residual
@@ -152,7 +152,7 @@ endforeach()
 # fma() on FMA hardware without contraction is nofma below, not in the
 # default list: with -march=native added to asan, quadrature took 5x longer
 # (34 s against 7 s of CPU at -O0 with ASan, measured).
-# and on request (MIST_VARIANT_LIST), every test each, MIST_TEST_QUICK=8:
+# and on request (MIST_VARIANT_LIST), every test each, MIST_TEST_QUICK=16:
 #   O0        -O0 without sanitizers
 #   nofma     -O2 -march=native -ffp-contract=off without -ffast-math
 # The main build's stress test makes the 1e8 calls; the variants' 5e6
@@ -167,7 +167,7 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
   endif()
   set(MIST_VARIANT_LIST "asan;fastmath;O3" CACHE STRING
       "The variants to test (MIST_VARIANTS): any of asan fastmath O3 O0 nofma")
-  set(MIST_VARIANT_QUICK 8 CACHE STRING
+  set(MIST_VARIANT_QUICK 16 CACHE STRING
       "MIST_TEST_QUICK for the variants' accuracy, chi2 and height_fog tests (1: full size)")
   function(mist_variant name flags calls exclude native)
     if(NOT name IN_LIST MIST_VARIANT_LIST)
