@@ -1174,53 +1174,36 @@ static void size_rows(void)
  * samplers take a cube root from the bits), one call at a time and over an
  * array, against mist's exact samplers in float, unprepared and prepared
  * (the medium prepared once, outside the timed loop), in the same run. */
-static mist_phasef rr_hg, rr_dr, rr_ray;
-static double r_cy_hg(void)      LOOP(float, hg_sample_printed(0.8f, xf[i]))
 static double r_cy_dr(void)      LOOP(float, draine_cyclesf(0.5f, 17.f, xf[i]))
 static double r_cy_ray(void)     LOOP(float, rayleigh_cyclesf(xf[i]))
-static double r_hg(void)         LOOP(float, mist_hg_samplef(0.8f, xf[i]))
-static double r_dr(void)         LOOP(float, mist_draine_samplef(0.5f, 17.f, xf[i]))
-static double r_ray(void)        LOOP(float, mist_rayleigh_samplef(xf[i]))
-static double r_phase_hg(void)   LOOP(float, mist_phase_samplef(&rr_hg, xf[i]))
-static double r_phase_dr(void)   LOOP(float, mist_phase_samplef(&rr_dr, xf[i]))
-static double r_phase_ray(void)  LOOP(float, mist_phase_samplef(&rr_ray, xf[i]))
-#define VLOOP2(T, EXPR) { int i; for (i = 0; i < N; ++i) out_##T[i] = EXPR; \
-                          return (double)out_##T[N / 2]; }
-static double v_cy_hg(void)      VLOOP2(float, hg_sample_printed(0.8f, xf[i]))
-static double v_cy_dr(void)      VLOOP2(float, draine_cyclesf(0.5f, 17.f, xf[i]))
-static double v_cy_ray(void)     VLOOP2(float, rayleigh_cyclesf(xf[i]))
-static double r_hg_n(void)  { mist_hg_sample_nf(0.8f, xf, out_float, N); return (double)out_float[N / 2]; }
-static double r_ray_n(void) { mist_rayleigh_sample_nf(xf, out_float, N); return (double)out_float[N / 2]; }
-static double r_phase_dr_n(void)
-{
-    mist_phase_sample_nf(&rr_dr, xf, out_float, N);
-    return (double)out_float[N / 2];
-}
+static double v_cy_dr(void)      VLOOP(float, draine_cyclesf(0.5f, 17.f, xf[i]))
+static double v_cy_ray(void)     VLOOP(float, rayleigh_cyclesf(xf[i]))
+/* (Cycles' and pbrt-v4's HG sampler is eq. 3: b_hg_sample_printed, and
+ * vectorised v_bare_samplef; mist's rows are the ones timed above, on the
+ * media prepared in main) */
 static void renderer_rows(void)
 {
-    rr_hg = mist_phase_hgf(0.8f);
-    rr_dr = mist_phase_drainef(0.5f, 17.f);
-    rr_ray = mist_phase_rayleighf();
+    ph_rlf = mist_phase_rayleighf();
     printf("\nWhat renderers ship (float; HG g .8, Draine g .5, alpha 17), one call at a time:\n");
-    row("Cycles / pbrt-v4 HG sample (eq. 3)", r_cy_hg, NULL, NULL);
-    row("mist_hg_samplef", r_hg, "Cycles", r_cy_hg);
-    row("mist_phase_samplef (HG)", r_phase_hg, "Cycles", r_cy_hg);
+    row("Cycles / pbrt-v4 HG sample (eq. 3)", b_hg_sample_printed, NULL, NULL);
+    row("mist_hg_samplef", b_hg_samplef, "Cycles", b_hg_sample_printed);
+    row("mist_phase_samplef (HG)", b_phase_hg_samplef, "Cycles", b_hg_sample_printed);
     row("Cycles Draine sample (eq. 6)", r_cy_dr, NULL, NULL);
-    row("mist_draine_samplef", r_dr, "Cycles", r_cy_dr);
-    row("mist_phase_samplef (Draine)", r_phase_dr, "Cycles", r_cy_dr);
+    row("mist_draine_samplef", b_draine_samplef, "Cycles", r_cy_dr);
+    row("mist_phase_samplef (Draine)", b_phase_draine_samplef, "Cycles", r_cy_dr);
     row("Cycles Rayleigh sample", r_cy_ray, NULL, NULL);
-    row("mist_rayleigh_samplef", r_ray, "Cycles", r_cy_ray);
-    row("mist_phase_samplef (Rayleigh)", r_phase_ray, "Cycles", r_cy_ray);
+    row("mist_rayleigh_samplef", b_rayleigh_samplef, "Cycles", r_cy_ray);
+    row("mist_phase_samplef (Rayleigh)", c_phase_rl_samplef, "Cycles", r_cy_ray);
     printf("over an array of %d (each a loop the compiler vectorises), per element:\n", N);
-    row("Cycles / pbrt-v4 HG sample (eq. 3)", v_cy_hg, NULL, NULL);
-    row("mist_hg_sample_nf", r_hg_n, "Cycles", v_cy_hg);
-    row("mist_hg_sample_nf", r_hg_n, "Cycles' scalar loop", r_cy_hg);
+    row("Cycles / pbrt-v4 HG sample (eq. 3)", v_bare_samplef, NULL, NULL);
+    row("mist_hg_sample_nf", n_hg_samplef, "Cycles", v_bare_samplef);
+    row("mist_hg_sample_nf", n_hg_samplef, "Cycles' scalar loop", b_hg_sample_printed);
     row("Cycles Draine sample (eq. 6)", v_cy_dr, NULL, NULL);
-    row("mist_phase_sample_nf (Draine)", r_phase_dr_n, "Cycles", v_cy_dr);
-    row("mist_phase_sample_nf (Draine)", r_phase_dr_n, "Cycles' scalar loop", r_cy_dr);
+    row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "Cycles", v_cy_dr);
+    row("mist_phase_sample_nf (Draine)", n_phase_dr_samplef, "Cycles' scalar loop", r_cy_dr);
     row("Cycles Rayleigh sample", v_cy_ray, NULL, NULL);
-    row("mist_rayleigh_sample_nf", r_ray_n, "Cycles", v_cy_ray);
-    row("mist_rayleigh_sample_nf", r_ray_n, "Cycles' scalar loop", r_cy_ray);
+    row("mist_rayleigh_sample_nf", n_rayleigh_samplef, "Cycles", v_cy_ray);
+    row("mist_rayleigh_sample_nf", n_rayleigh_samplef, "Cycles' scalar loop", r_cy_ray);
 }
 
 /* Tabulated phase functions (mist_tab_*): float tables of HG .9 at n nodes
