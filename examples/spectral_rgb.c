@@ -10,14 +10,17 @@
  * colour of the light scattered into the fogbow (138-145 degrees) and the
  * glory (175-180 degrees) under D65: the mean of c_sca[c] p_c over the band
  * (the grid's angles there, 0.25 degrees apart), as CIE xy, and each
- * channel's ratio shortcut / spectral.  Prints Markdown tables.
+ * channel's ratio shortcut / spectral.  Prints Markdown tables.  With the
+ * argument "solar": sunlight above the atmosphere (mist_mie_solar) in
+ * place of D65.
  *
  * Build and run (from the repository root):
  *   cc -std=c99 -O2 -Iinclude -Itests examples/spectral_rgb.c -o spectral_rgb -lm
- *   ./spectral_rgb        (about 20 s: 84 size averages per diameter) */
+ *   ./spectral_rgb [solar]   (about 20 s: 84 size averages per diameter) */
 #include "mist.h"
 #include "mist_mie.h"
 #include "mist_fitref.h"
+#include <string.h>
 
 static double spec[NTH * 3], sp[3][NTH], sh[3][NTH];
 
@@ -45,8 +48,10 @@ static void band(double p[3][NTH], const double *c, double a, double b, double *
     for (k = 0; k < 3; ++k) rgb[k] /= n;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    static double solar[MIST_MIE_CIE_N];
+    const double *spd = NULL;
     static const double D[3] = { 2, 10, 20 }, LAM[3] = { 650, 510, 440 };
     static const double BA[2] = { 138, 175 }, BB[2] = { 145, 180 };
     static const char *CH = "RGB", *BN[2] = { "fogbow 138-145", "glory 175-180" };
@@ -54,11 +59,16 @@ int main(void)
     size_t neg[3];
     int k, c, i, b;
     fitref_grid();
+    if (argc > 1 && strcmp(argv[1], "solar") == 0) {
+        for (i = 0; i < MIST_MIE_CIE_N; ++i) solar[i] = mist_mie_solar(380 + 5 * i);
+        spd = solar;
+    }
+    printf("Illuminant: %s\n\n", spd ? "extraterrestrial sunlight (mist_mie_solar)" : "D65");
     for (k = 0; k < 3; ++k) {
         mist_mie_dist dist = mist_mie_dist_lognormal(D[k] / 2, 1.1);
         mist_mie_rgb r;
         dist.n_radii = 200;
-        r = mist_mie_spectral_rgb(&dist, 1.0, NULL, NULL, MIST_MIE_CIE_N, mu, NTH, spec);
+        r = mist_mie_spectral_rgb(&dist, 1.0, NULL, spd, MIST_MIE_CIE_N, mu, NTH, spec);
         if (r.status != MIST_MIE_OK) { printf("spectral: %d\n", r.status); return 1; }
         neg[k] = r.negative;
         for (c = 0; c < 3; ++c) {

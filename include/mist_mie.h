@@ -2039,8 +2039,9 @@ MIST_MIE_FUNC mist_mie_tabfit mist_mie_tab_nodes(const mist_mie_dist *dist,
 /* test_spectral): the 5 nm sums times 5 are 106.857 (ybar), equal-energy   */
 /* white at x = y = 1/3 within 1e-4, D65 at (0.3127, 0.3290) within 1e-4,   */
 /* and M times D65's XYZ (Y = 1) is (1, 1, 1) within 1e-3 (M's 4 digits).   */
-/* Another illuminant (e.g. the extraterrestrial solar spectrum) is given   */
-/* as spd[] at the same wavelengths; another particle than water as m[].   */
+/* Another illuminant is given as spd[] at the same wavelengths (sunlight   */
+/* above the atmosphere: mist_mie_solar); another particle than water as   */
+/* m[].                                                                     */
 /* Cost: n_lambda mist_mie_average calls of one wavelength each.            */
 /* ======================================================================== */
 
@@ -2160,6 +2161,37 @@ MIST_MIE_FUNC double mist_mie_d65(double lambda_nm)
     double v[4];
     mist_mie__cie(lambda_nm, v);
     return v[3];
+}
+
+/* The extraterrestrial solar spectrum (air mass 0) at lambda_nm, W m^-2
+ * nm^-1 at 1 au: ASTM G173-03's extraterrestrial column (Gueymard's
+ * SMARTS 2.9.2 spectrum, 0.5-1 nm steps) averaged over 5 nm bands centred
+ * on 380, 385, ..., 780 nm (the mean of its piecewise-linear curve over
+ * [lambda - 2.5, lambda + 2.5]: the Fraunhofer lines averaged as a 5 nm
+ * quadrature sees them, not sampled), linear between the rows; 0 outside
+ * [380, 780] and for NaN.  For mist_mie_spectral_rgb's spd[] (sunlight
+ * above the atmosphere instead of D65: spd[l] = mist_mie_solar(380 + 400 l
+ * / (n_lambda - 1))). */
+MIST_MIE_FUNC double mist_mie_solar(double lambda_nm)
+{
+    static const double tab[MIST_MIE_CIE_N] = {
+        1.1893, 0.9339, 1.1739, 0.9382, 1.6258, 1.7064, 1.7116, 1.7606,   /* 380 */
+        1.7257, 1.7061, 1.4578, 1.7430, 1.7696, 1.9107, 2.0500, 2.0120,   /* 420 */
+        2.0379, 2.0089, 1.9975, 2.0270, 2.0612, 1.8822, 1.9184, 1.9748,   /* 460 */
+        1.8998, 1.9343, 1.9353, 1.8076, 1.8139, 1.8463, 1.9276, 1.8693,   /* 500 */
+        1.8366, 1.8769, 1.8649, 1.8580, 1.8177, 1.8328, 1.8308, 1.8518,   /* 540 */
+        1.8286, 1.8359, 1.7533, 1.7912, 1.7543, 1.7631, 1.7310, 1.6786,   /* 580 */
+        1.7034, 1.6651, 1.6609, 1.6447, 1.6303, 1.6121, 1.5769, 1.4844,   /* 620 */
+        1.5511, 1.5551, 1.5327, 1.5087, 1.4942, 1.4629, 1.4710, 1.4454,   /* 660 */
+        1.4178, 1.4154, 1.3942, 1.3674, 1.3429, 1.3491, 1.3188, 1.3200,   /* 700 */
+        1.2775, 1.2902, 1.2742, 1.2691, 1.2543, 1.2339, 1.2153, 1.2080,   /* 740 */
+        1.1971   /* 780 */
+    };
+    double t = (lambda_nm - 380) / 5;
+    long i;
+    if (!(t >= 0 && t <= MIST_MIE_CIE_N - 1)) return 0;
+    i = mist_mie__clampl(t, 0, MIST_MIE_CIE_N - 2);
+    return tab[i] + (t - (double)i) * (tab[i + 1] - tab[i]);
 }
 
 /* Linear sRGB from CIE XYZ (IEC 61966-2-1: D65 white, no gamma). */

@@ -96,7 +96,10 @@ endforeach()
 #             batch_nold walks the same blocks, remainders and arrays, the
 #             batch forms' indexing, which is what ASan checks there, and
 #             the stress run calls the batch forms of this configuration;
-#             batch took 7.8 s of CPU here.  batch_nold stays: built with
+#             batch took 7.8 s of CPU here; and quadrature and fits,
+#             closed forms evaluated: the functions they call run here
+#             under accuracy, domain and the stress run, 19 and 10 s under
+#             ASan).  batch_nold stays: built with
 #             -march=native -fno-math-errno it is asan's only build of the
 #             vectorised kernels (mist__draine_vk, the fma branches) and
 #             their stack blocks, and of n = 0 and n >= 1024 (in quick
@@ -165,7 +168,14 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
   if(MIST_HAVE_MARCH_NATIVE)
     set(_native "-march=native")     # with FMA where the host has it
   endif()
-  set(MIST_VARIANT_LIST "asan;fastmath;O3" CACHE STRING
+  # asan by default; fastmath and O3 with the slow tests (MIST_TEST_SLOW),
+  # the main build's *_fastmath and *_contract programs standing in for them
+  if(MIST_TEST_SLOW)
+    set(_variants "asan;fastmath;O3")
+  else()
+    set(_variants "asan")
+  endif()
+  set(MIST_VARIANT_LIST "${_variants}" CACHE STRING
       "The variants to test (MIST_VARIANTS): any of asan fastmath O3 O0 nofma")
   set(MIST_VARIANT_QUICK 16 CACHE STRING
       "MIST_TEST_QUICK for the variants' accuracy, chi2 and height_fog tests (1: full size)")
@@ -179,12 +189,16 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
                      ${CMAKE_GENERATOR} "${flags}" ${calls} "${exclude}" "${MIST_VARIANT_QUICK}"
                      ${native})
     set_tests_properties(variant_${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 COST 100)
+    if(NOT name STREQUAL "asan")
+      set_tests_properties(variant_${name} PROPERTIES LABELS slow)
+    endif()
   endfunction()
   # name, CMAKE_C_FLAGS, MIST_STRESS_CALLS, the tests left out (a regex),
   # MIST_TEST_NATIVE (the *_native builds: off where the variant's flags
   # would make them a repeat, O3 and nofma, or where -march=native costs
   # more than it finds, asan: see above)
-  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6 "^(batch|tab_nold)$" OFF)
+  mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6
+               "^(batch|tab_nold|quadrature|fits)$" OFF)
   mist_variant(fastmath "-O2 -ffast-math" 5e6 "" OFF)
   mist_variant(O3 "-O3 ${_native} -ffp-contract=fast" 5e6 "^(accuracy_nold|tab_nold)$" OFF)
   mist_variant(O0 "-O0" 5e6 "" ON)

@@ -2012,6 +2012,27 @@ static void test_spectral(void)
     mist_mie_cie1931(379.9, xyz);
     mt_check(xyz[0] == 0 && xyz[1] == 0 && xyz[2] == 0 && mist_mie_d65(780.1) == 0
              && mist_mie_d65(NAN) == 0, "outside 380-780: 0");
+    /* The solar table: band means of ASTM G173-03's extraterrestrial column
+     * computed outside this code (its 0.5-1 nm rows, 5 nm bands: 380 nm
+     * 1.1893 (rows 377.5-382.5), 550 nm 1.8649 (547.5-552.5), 780 nm 1.1971
+     * (777.5-782.5), to the 4 digits stored); linear between rows, 0 outside;
+     * the 5 nm trapezoid sum over 380-780 nm 656.065 W m^-2 (the same
+     * rows). */
+    {
+        double tot = 0, lo = 1e9;
+        for (i = 0; i < MIST_MIE_CIE_N; ++i) {
+            double s = mist_mie_solar(380 + 5 * i);
+            tot += (i == 0 || i == MIST_MIE_CIE_N - 1 ? 2.5 : 5) * s;
+            if (s < lo) lo = s;
+        }
+        mt_check(mist_mie_solar(380) == 1.1893 && mist_mie_solar(550) == 1.8649
+                 && fabs(mist_mie_solar(780) - 1.1971) < 1e-15 && lo > 0.9
+                 && fabs(tot - 656.065) < 1e-9,
+                 "solar rows: total %.6f, lowest %.4f", tot, lo);
+        mt_check(fabs(mist_mie_solar(552.5) - (mist_mie_solar(550) + mist_mie_solar(555)) / 2)
+                 < 1e-15 && mist_mie_solar(379.9) == 0 && mist_mie_solar(780.1) == 0
+                 && mist_mie_solar(NAN) == 0, "solar: linear between rows, 0 outside");
+    }
 
     /* Rayleigh droplets */
     for (i = 0; i < NM; ++i) mu[i] = cos(PI * (NM - 1 - i) / (NM - 1));
