@@ -5,7 +5,7 @@
  *
  * Build and run (from the repository root):
  *   cc -std=c99 -O2 -Iinclude -Itests examples/tradeoff.c -o tradeoff -lm
- *   ./tradeoff [out.svg]            (about 3 s)
+ *   ./tradeoff [out.svg]            (about 20 s: the tables need their Mie references)
  * tests/mist_ref.h needs __float128 (gcc or clang on x86-64).
  *
  * PART 1: phase functions against Lorenz-Mie, droplet diameters 2, 5, 10,
@@ -39,7 +39,11 @@
  *                and stay about uniform in theta elsewhere (see warp_s).
  *                Both tables hold the exact Mie values at their nodes and
  *                are scaled so that the interpolant integrates to 1 (their
- *                raw integrals are printed).
+ *                raw integrals are printed);
+ *   mist_tab N   mist.h's tabulated phase function (mist_tab_eval,
+ *                mist_tab_sample: exact sampling) through the nodes
+ *                mist_mie_tab_nodes places adaptively, at most N of them
+ *                (the best table of at most N nodes; the count is printed).
  * Costs: ns per call, double precision, on 4096 random u (resp. xi) per
  * repetition, read through volatile (no vectorised loops: a renderer calls
  * these one at a time), median of 15 repetitions (bench/mist_bench.c's
@@ -78,7 +82,7 @@
 #define N_RADII 200        /* radii per Mie average (as fit_error.c) */
 #define ND      4
 #define NLUT    4
-#define NM      (6 + 2 * NLUT)
+#define NM      (6 + 3 * NLUT)
 
 static const double DS[ND] = { 2, 5, 10, 20 };
 static const int LUT_N[NLUT] = { 16, 64, 256, 1024 };
@@ -241,6 +245,8 @@ typedef struct {
     mist_fog fog;
     double *lut[2][NLUT];
     double lut_raw[2][NLUT];           /* integral before scaling */
+    mist_tab *tab[NLUT];               /* mist_tab through adaptive nodes */
+    size_t tab_n[NLUT];
 } diam;
 
 static diam D[ND];
@@ -306,7 +312,7 @@ static void draine_fit(const double *r, double *g_out, double *a_out)
 /* Part 1 models: evaluation (for the errors) and timing                    */
 /* ======================================================================== */
 
-enum { M_HG, M_CS, M_DR, M_SCH, M_XLF, M_FOG, M_LUT };   /* M_LUT + 4 w + k */
+enum { M_HG, M_CS, M_DR, M_SCH, M_XLF, M_FOG, M_LUT };   /* M_LUT + 4 w + k; w = 2: mist_tab */
 
 static const char *model_name(int m, char *buf)
 {
@@ -314,6 +320,10 @@ static const char *model_name(int m, char *buf)
                                 "Draine, (g, alpha) fitted", "Schlick (not in mist)",
                                 "XLF **INVALID: not a density**", "Jendersie-d'Eon fit" };
     if (m < M_LUT) return nm[m];
+    if ((m - M_LUT) / NLUT == 2) {
+        sprintf(buf, "mist_tab, adaptive nodes, at most %d", LUT_N[(m - M_LUT) % NLUT]);
+        return buf;
+    }
     sprintf(buf, "LUT %s, %d entries", (m - M_LUT) / NLUT == 0 ? "uniform theta" : "warped",
             LUT_N[(m - M_LUT) % NLUT]);
     return buf;
@@ -330,6 +340,7 @@ static double model_eval(int m, const diam *q, double u)
     case M_FOG: return mist_fog_eval(q->fog, u);
     default: {
         int w = (m - M_LUT) / NLUT, k = (m - M_LUT) % NLUT;
+        if (w == 2) return mist_tab_eval(q->tab[k], u, NULL);
         return w == 0 ? lut_theta_eval(q->lut[0][k], LUT_N[k], u)
                       : lut_warp_eval(q->lut[1][k], LUT_N[k], u);
     }
@@ -341,6 +352,7 @@ static double cg, ca, ck;
 static mist_fog cfog;
 static const double *ct;
 static int cn;
+static const mist_tab *ctab;
 
 #define LOOP(T, EXPR) { T s = 0; int i; for (i = 0; i < NB; ++i) s += EXPR; return (double)s; }
 
@@ -352,6 +364,8 @@ static double t_xlf_e(void)  LOOP(double, xlf_eval(cg, ub[i]))
 static double t_fog_e(void)  LOOP(double, mist_fog_eval(cfog, ub[i]))
 static double t_lutt_e(void) LOOP(double, lut_theta_eval(ct, cn, ub[i]))
 static double t_lutw_e(void) LOOP(double, lut_warp_eval(ct, cn, ub[i]))
+static double t_tab_e(void)  LOOP(double, mist_tab_eval(ctab, ub[i], NULL))
+static double t_tab_s(void)  LOOP(double, mist_tab_sample(ctab, xb[i]))
 static double t_hg_s(void)   LOOP(double, mist_hg_sample(cg, xb[i]))
 static double t_cs_s(void)   LOOP(double, mist_cs_sample(cg, xb[i]))
 static double t_dr_s(void)   LOOP(double, mist_draine_sample(cg, ca, xb[i]))
@@ -383,6 +397,7 @@ typedef struct {
     double g, a, k;
     mist_fog fog;
     const double *t;
+    const mist_tab *tab;
     int n;
     double *out;
     double ts[REPS];
@@ -398,11 +413,12 @@ static void add_job(bench_fn fn, double g, double a, double k, mist_fog fog, con
     job *j = &jobs[njobs++];
     if (njobs > MAXJOB) { fprintf(stderr, "too many timing jobs\n"); exit(1); }
     j->fn = fn; j->g = g; j->a = a; j->k = k; j->fog = fog; j->t = t; j->n = n; j->out = out;
+    j->tab = NULL;
 }
 
 static void job_setup(const job *j)
 {
-    cg = j->g; ca = j->a; ck = j->k; cfog = j->fog; ct = j->t; cn = j->n;
+    cg = j->g; ca = j->a; ck = j->k; cfog = j->fog; ct = j->t; cn = j->n; ctab = j->tab;
     cgf = (float)j->g; caf = (float)j->a;
     if (j->fn == t_prepf) cphf = mist_phase_drainef(cgf, caf);
     if (j->fn == t_prepd) cph = mist_phase_draine(cg, ca);
@@ -462,6 +478,13 @@ static void model_jobs(int m, const diam *q, double *ne, double *ns)
                 add_job(t_fog_s, 0, 0, 0, f0, NULL, 0, ns); break;
     default: {
         int w = (m - M_LUT) / NLUT, k = (m - M_LUT) % NLUT;
+        if (w == 2) {
+            add_job(t_tab_e, 0, 0, 0, f0, NULL, 0, ne);
+            jobs[njobs - 1].tab = q->tab[k];
+            add_job(t_tab_s, 0, 0, 0, f0, NULL, 0, ns);
+            jobs[njobs - 1].tab = q->tab[k];
+            break;
+        }
         add_job(w == 0 ? t_lutt_e : t_lutw_e, 0, 0, 0, f0, q->lut[w][k], LUT_N[k], ne);
     }
     }
@@ -725,14 +748,17 @@ int main(int argc, char **argv)
 {
     static const char *colors[NM] = { "#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#d00000",
                                       "#000000", "#8c564b", "#8c564b", "#8c564b", "#8c564b",
-                                      "#17becf", "#17becf", "#17becf", "#17becf" };
-    static const int shapes[NM] = { 0, 1, 2, 3, 4, 0, 0, 0, 0, 0, 1, 1, 1, 1 };
+                                      "#17becf", "#17becf", "#17becf", "#17becf",
+                                      "#e377c2", "#e377c2", "#e377c2", "#e377c2" };
+    static const int shapes[NM] = { 0, 1, 2, 3, 4, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2 };
     static const double SG[4] = { 0.01, 0.1, 0.5, 0.9 }, SA[3] = { 1, 17, 250 };
     static const char *short_name[NM] = { "HG", "CS", "Draine fit", "Schlick",
                                           "XLF: INVALID, not a density", "JD23 fit",
                                           "LUT \xce\xb8 16", "64", "256", "1024",
-                                          "LUT warped 16", "64", "256", "1024" };
-    const char *legend_text[M_LUT + 2] = {
+                                          "LUT warped 16", "64", "256", "1024",
+                                          "mist_tab \xe2\x89\xa4" "16", "\xe2\x89\xa4" "64",
+                                          "\xe2\x89\xa4" "256", "\xe2\x89\xa4" "1024" };
+    const char *legend_text[M_LUT + 3] = {
         "HG, g = the Mie asymmetry (mist_hg_eval)",
         "Cornette-Shanks, same mean cosine as Mie (mist_cs_eval)",
         "Draine, (g, \xce\xb1) fitted to Mie by logRMS (mist_draine_eval)",
@@ -740,7 +766,8 @@ int main(int argc, char **argv)
         "",
         "Jendersie-d'Eon fit, HG + Draine (mist_fog_from_diameter)",
         "LUT uniform in \xce\xb8 (acos), 16 / 64 / 256 / 1024 entries",
-        "LUT in a warped coordinate (3 sqrt), 16 / 64 / 256 / 1024 entries" };
+        "LUT in a warped coordinate (3 sqrt), 16 / 64 / 256 / 1024 entries",
+        "mist_tab (exact sampling), adaptive nodes, at most 16 / 64 / 256 / 1024" };
     char defout[4096];
     const char *out = argc > 1 ? argv[1] : beside_program(defout, sizeof defout, argv[0],
                                                           "tradeoff.svg");
@@ -797,6 +824,28 @@ int main(int argc, char **argv)
                 q->lut[w][i] = t;
             }
         free(nodes); free(vals);
+        for (i = 0; i < NLUT; ++i) {           /* mist_tab: the best of at most N nodes */
+            mist_mie_wavelength wl[3];
+            mist_mie_dist dist = mist_mie_dist_lognormal(DS[k] / 2, 1.1);
+            mist_mie_tabfit tf;
+            double *tmu = (double *)malloc(sizeof(double) * 2 * LUT_N[i]), *tp = tmu + LUT_N[i];
+            size_t bytes;
+            if (!tmu) return 1;
+            wl[0] = mist_mie_wl(0.45, 1, mist_mie_water(450, NULL));
+            wl[1] = mist_mie_wl(0.55, 1, mist_mie_water(550, NULL));
+            wl[2] = mist_mie_wl(0.65, 1, mist_mie_water(650, NULL));
+            dist.n_radii = N_RADII;
+            tf = mist_mie_tab_nodes(&dist, wl, 3, 0, 1.0, 1e-9, 1e-9, (size_t)LUT_N[i], tmu, tp);
+            bytes = mist_tab_bytes(tf.n, 1);
+            q->tab[i] = (mist_tab *)malloc(bytes ? bytes : 1);
+            q->tab_n[i] = tf.n;
+            if (tf.status != MIST_MIE_OK || !q->tab[i]
+                || mist_tab_init(q->tab[i], bytes, tmu, tp, tf.n, 1) != 0) {
+                fprintf(stderr, "mist_tab at d = %g failed\n", DS[k]);
+                return 1;
+            }
+            free(tmu);
+        }
     }
 
     /* ---- errors and costs ----------------------------------------------- */
@@ -888,6 +937,11 @@ int main(int argc, char **argv)
             printf(" %s %d: %.3f / %.3f%s", w ? "warped" : "theta", LUT_N[i],
                    D[0].lut_raw[w][i], D[ND - 1].lut_raw[w][i],
                    w == 1 && i == NLUT - 1 ? ".\n" : ";");
+    printf("mist_tab nodes placed (d = 2 / 5 / 10 / 20 um):");
+    for (i = 0; i < NLUT; ++i)
+        printf(" at most %d: %lu / %lu / %lu / %lu%s", LUT_N[i], (unsigned long)D[0].tab_n[i],
+               (unsigned long)D[1].tab_n[i], (unsigned long)D[2].tab_n[i],
+               (unsigned long)D[3].tab_n[i], i == NLUT - 1 ? ".\n" : ";");
 
     /* ---- part 2: samplers ------------------------------------------------ */
     {
@@ -1112,11 +1166,11 @@ int main(int argc, char **argv)
         {
             double lx = 860, ly = 580;
             int row = 0;
-            fprintf(f, "<rect x='%.0f' y='%.0f' width='600' height='360' fill='white' "
+            fprintf(f, "<rect x='%.0f' y='%.0f' width='600' height='390' fill='white' "
                     "stroke='#444'/>\n", lx, ly);
             fprintf(f, "<text x='%.0f' y='%.0f' font-size='15' font-weight='bold'>Legend"
                     "</text>\n", lx, ly - 12);
-            for (m = 0; m <= M_LUT + NLUT; m += m < M_LUT ? 1 : NLUT) {
+            for (m = 0; m <= M_LUT + 2 * NLUT; m += m < M_LUT ? 1 : NLUT) {
                 double yy = ly + 24 + 22 * row++;
                 int hol = m < M_LUT && m != M_FOG && m != M_XLF;
                 if (m >= M_LUT)
