@@ -42,7 +42,10 @@
  * d = 0.05, 1, 3, 10, 50 um (each of the fits' four ranges, both ends of
  * the widest); Rayleigh; each by its unprepared *_sample_dir and by the
  * prepared mist_phase_sample_dir; float and double; a 3-channel table
- * (mist_tab_*, float and double).  Densities sigma = 0.5, 2, 4 in turn.
+ * (mist_tab_*, float and double).  Densities sigma = 0.5, 2, 4 in turn
+ * (the table at 0.5: its channels' weights q_c / s multiply over the
+ * vertices, and a product of many has the heavy tail the CLT needs more
+ * paths for).
  *
  * The bar.  A pixel's estimate is the mean m of n independent path values
  * X_i.  L is a sum of per-vertex terms in [0, beta], with exact weights
