@@ -226,6 +226,17 @@ static double b_phase_dr250_samplef(void) LOOP(float, mist_phase_samplef(&ph_dr2
 static double b_phase_cs_samplef(void) LOOP(float, mist_phase_samplef(&ph_csf, xf[i]))
 static double b_phase_fog_evalf(void)  LOOP(float, mist_phase_evalf(&ph_fogf, uf[i]))
 static double b_phase_fog_samplef(void) LOOP(float, mist_phase_samplef(&ph_fogf, xf[i]))
+/* the fog mixture (d = 10 um: g_hg .988, g_d .556, alpha 22, w_d .482) one
+ * at a time and as batches: prepared and unprepared, float and double */
+static mist_phase ph_fog;
+static const mist_fogf fog10f = { 0.988f, 0.556f, 22.0f, 0.482f };
+static const mist_fog fog10 = { 0.988, 0.556, 22.0, 0.482 };
+static double b_phase_fog_sample(void) LOOP(double, mist_phase_sample(&ph_fog, xd[i]))
+static double b_phase_fog_eval(void)   LOOP(double, mist_phase_eval(&ph_fog, ud[i]))
+static double b_fog_sample10(void)     LOOP(double, mist_fog_sample(fog10, xd[i]))
+static double b_fog_eval10(void)       LOOP(double, mist_fog_eval(fog10, ud[i]))
+static double b_fog_samplef10(void)    LOOP(float, mist_fog_samplef(fog10f, xf[i]))
+static double b_fog_evalf10(void)      LOOP(float, mist_fog_evalf(fog10f, uf[i]))
 
 static void prepared_rows(void);
 static double b_hg_sample_dirf(void)
@@ -526,6 +537,16 @@ static double n_phase_dr_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_drf
 static double n_phase_dr_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_drf, uf, out_float, N))
 static double n_phase_dr_sample(void) NCALL(double, mist_phase_sample_n(&ph_dr, xd, out_double, N))
 static double v_eq6f(void) VLOOP(float, draine_eq6f(0.5f, 17.f, xf[i]))
+static double n_phase_fog_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_fogf, xf, out_float, N))
+static double n_phase_fog_sample(void) NCALL(double, mist_phase_sample_n(&ph_fog, xd, out_double, N))
+static double n_phase_fog_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_fogf, uf, out_float, N))
+static double n_phase_fog_eval(void) NCALL(double, mist_phase_eval_n(&ph_fog, ud, out_double, N))
+static double n_fog_samplef(void) NCALL(float, mist_fog_sample_nf(fog10f, xf, out_float, N))
+static double n_fog_sample(void)  NCALL(double, mist_fog_sample_n(fog10, xd, out_double, N))
+static double n_fog_evalf(void)   NCALL(float, mist_fog_eval_nf(fog10f, uf, out_float, N))
+static double n_fog_eval(void)    NCALL(double, mist_fog_eval_n(fog10, ud, out_double, N))
+static double n_phase_fog_samplef_64(void)
+    NCHUNK(float, 64, mist_phase_sample_nf(&ph_fogf, xf + c, out_float + c, 64))
 static double n_rayleigh_evalf(void) NCALL(float, mist_rayleigh_eval_nf(uf, out_float, N))
 static double n_rayleigh_eval(void)  NCALL(double, mist_rayleigh_eval_n(ud, out_double, N))
 static double n_rayleigh_samplef(void) NCALL(float, mist_rayleigh_sample_nf(xf, out_float, N))
@@ -633,6 +654,16 @@ static void batch_rows(void)
 #else
     row_speedup("mist_phase_sample_n  (Draine, loop)", n_phase_dr_sample, b_phase_draine_sample);
 #endif
+    row_speedup("mist_phase_sample_nf (fog 10 um)", n_phase_fog_samplef, b_phase_fog_samplef);
+    row_speedup("mist_phase_sample_nf (fog, n = 64 each)", n_phase_fog_samplef_64,
+                b_phase_fog_samplef);
+    row_speedup("mist_phase_sample_n  (fog 10 um)", n_phase_fog_sample, b_phase_fog_sample);
+    row_speedup("mist_fog_sample_nf (10 um)", n_fog_samplef, b_fog_samplef10);
+    row_speedup("mist_fog_sample_n  (10 um)", n_fog_sample, b_fog_sample10);
+    row_speedup("mist_phase_eval_nf (fog 10 um)", n_phase_fog_evalf, b_phase_fog_evalf);
+    row_speedup("mist_phase_eval_n  (fog 10 um)", n_phase_fog_eval, b_phase_fog_eval);
+    row_speedup("mist_fog_eval_nf (10 um)", n_fog_evalf, b_fog_evalf10);
+    row_speedup("mist_fog_eval_n  (10 um)", n_fog_eval, b_fog_eval10);
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf", n_rayleigh_samplef, b_rayleigh_samplef);
@@ -1337,11 +1368,16 @@ int main(int argc, char **argv)
     ph_drf = mist_phase_drainef(0.5f, 17.f);
     ph_dr  = mist_phase_draine(0.5, 17.);
     ph_fogf = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
+    ph_fog = mist_phase_fog(fog10);
     machine();
     printf("ns per call: median of %d repetitions of %d calls [min..max]; "
            "ratio to the baseline named\n\n", REPS, N);
     if (argc > 1 && strcmp(argv[1], "tab") == 0) {   /* ./mist_bench tab: the tables alone */
         tab_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "batch") == 0) {  /* ./mist_bench batch: the batch forms */
+        batch_rows();
         return 0;
     }
 

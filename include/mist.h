@@ -136,7 +136,10 @@
  *   bit differs from mist_draine_sample's for ~1e-4 of xi in float, ~1e-3
  *   in double).  They work on blocks of 32 with branch-free bodies, which
  *   gcc and clang vectorise at -O2 and -O3; square roots vectorise only
- *   without errno (-fno-math-errno, implied by -ffast-math).
+ *   without errno (-fno-math-errno, implied by -ffast-math).  The fog
+ *   mixture's samplers (mist_fog_sample_n, mist_phase_sample_n of a fog)
+ *   sort each chunk's xi by lobe and run each lobe's batch (mist__mix_n);
+ *   in CUDA device code they are loops over the scalar function.
  *
  * FAST MATH
  *   Compiled with the includer's -ffast-math mist would break (gcc's
@@ -845,6 +848,14 @@ MIST__API void mist_phase_sample_n(const mist_phase *p, const double *in, double
     { mist__impl_phase_sample_n(p, in, out, n); }
 MIST__API void mist_phase_sample_nf(const mist_phasef *p, const float *in, float *out, size_t n)
     { mist__impl_phase_sample_nf(p, in, out, n); }
+MIST__API void mist_fog_eval_n(mist_fog fog, const double *in, double *out, size_t n)
+    { mist__impl_fog_eval_n(fog, in, out, n); }
+MIST__API void mist_fog_eval_nf(mist_fogf fog, const float *in, float *out, size_t n)
+    { mist__impl_fog_eval_nf(fog, in, out, n); }
+MIST__API void mist_fog_sample_n(mist_fog fog, const double *in, double *out, size_t n)
+    { mist__impl_fog_sample_n(fog, in, out, n); }
+MIST__API void mist_fog_sample_nf(mist_fogf fog, const float *in, float *out, size_t n)
+    { mist__impl_fog_sample_nf(fog, in, out, n); }
 #endif
 
 /* Analytic height fog [I18] along origin + t dir, 0 <= t <= length (+inf allowed):
@@ -3058,8 +3069,40 @@ MIST__F int MIST__FN(mist__phase_near1)(MIST__T g)
 }
 #endif
 
+/* The Draine lobe's sample at its xi' = x in [0, 1] (not mirrored), from
+ * the medium's table (mist_phase_sample of a Draine medium, the fog's
+ * Draine lobe, the batch samplers' fallbacks).  Forced inline in
+ * mist__phase_sample_w: the prepared try inlined there, ahead of the
+ * unprepared sampler's tests (one medium: 0.84x the time where that
+ * function is inlined in the caller's loop, 0.97x where it is a call;
+ * measured); the batch forms' fallbacks call mist__phase_drx. */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__phase_dr)(const MIST__PHASE *p, MIST__T x)
+{
+    MIST__T u;
+    double st;
+    if (MIST__M(fabs)(p->g) < MIST__C(1) && p->c1 != MIST__C(0)) {
+#if defined(__CUDA_ARCH__) && defined(MIST__DDR)
+        /* double in CUDA device code: eq. 6's start, as unprepared (an
+         * H200: 0.85x the time; the table's start and its double step
+         * cost more there than eq. 6, unlike on a CPU: docs/gpu.md) */
+        (void)u; (void)st;
+        return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0,
+                                             MIST__NULL);
+#else
+#if defined(MIST__W_EXACT)
+        if (MIST__FN(mist__phase_near1)(p->g))      /* mist_draine_samplef's values */
+            return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x,
+                                                 MIST__NULL, MIST__NULL);
+#endif
+        if (MIST__FN(mist__phase_try)(p->g, p->alpha, p->tab, x, &st, &u)) return u;
+        return MIST__FN(mist__draine_finish)(p->g, p->alpha, p->c0, p->c1, x, p->f0, st);
+#endif
+    }
+    return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0, p->tab);
+}
+
 /* mist_phase_sample past its HG test (p non-null, p->w > 0): Rayleigh,
- * Draine and the fog's mixture (also the Draine batch's scalar fallbacks,
+ * Draine and the fog's mixture (also the batch forms' scalar fallbacks,
  * which need no HG test: called directly, they keep the HG sample out of
  * the batch functions' code) */
 MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
@@ -3071,35 +3114,21 @@ MIST__F MIST__T MIST__FN(mist__phase_sample_w)(const MIST__PHASE *p, MIST__T xi)
     if (p->kind == 1) return MIST__FN(mist__impl_rayleigh_sample)(xi);
 #endif
     {
-        MIST__T x, sg, u;
-        double st;
+        MIST__T x, sg;
         int dr = MIST__FN(mist__fog_pick)(xi, w, &x, &sg);
         if (sg < MIST__C(0))       /* a fog's xi' within 1024 eps of 1: the
                                     * mirror, unprepared (mist_fog_sample) */
             return dr ? -MIST__FN(mist__impl_draine_sample)(-p->g, p->alpha, x)
                       : -MIST__FN(mist__impl_hg_sample)(-p->g_hg, x);
         if (!dr) return MIST__FN(mist__phase_hg)(p, x);
-        /* the prepared try inlined here, ahead of the unprepared sampler's
-         * tests (one medium: 0.84x the time where this function is inlined
-         * in the caller's loop, 0.97x where it is a call; measured) */
-        if (MIST__M(fabs)(p->g) < MIST__C(1) && p->c1 != MIST__C(0)) {
-#if defined(__CUDA_ARCH__) && defined(MIST__DDR)
-            /* double in CUDA device code: eq. 6's start, as unprepared (an
-             * H200: 0.85x the time; the table's start and its double step
-             * cost more there than eq. 6, unlike on a CPU: docs/gpu.md) */
-            return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0,
-                                                 MIST__NULL);
-#endif
-#if defined(MIST__W_EXACT)
-            if (MIST__FN(mist__phase_near1)(p->g))      /* mist_draine_samplef's values */
-                return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x,
-                                                     MIST__NULL, MIST__NULL);
-#endif
-            if (MIST__FN(mist__phase_try)(p->g, p->alpha, p->tab, x, &st, &u)) return u;
-            return MIST__FN(mist__draine_finish)(p->g, p->alpha, p->c0, p->c1, x, p->f0, st);
-        }
-        return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0, p->tab);
+        return MIST__FN(mist__phase_dr)(p, x);
     }
+}
+
+/* mist__phase_dr as a call (the batch forms' rare fallbacks: one copy) */
+MIST__F MIST__T MIST__FN(mist__phase_drx)(const MIST__PHASE *p, MIST__T x)
+{
+    return MIST__FN(mist__phase_dr)(p, x);
 }
 
 /* 1 where x > 0 (not NaN), on the bits: 1 <= bits <= those of +inf.  A
@@ -3518,6 +3547,18 @@ MIST__F void MIST__FN(mist__impl_phase_eval_n)(const MIST__FN(mist_phase) *p, co
                      y_[j_] = u == u ? r : MIST__C(0))
         return;
     }
+    if (p && p->kind == 2 && p->ge > MIST__C(-1) && p->ge < MIST__C(1)
+        && p->g_hg > MIST__C(-1) && p->g_hg < MIST__C(1)) {   /* two lobes, branch-free */
+        MIST__T ge = p->ge, a = p->a1, b = p->b1, gh = p->g_hg, a2 = p->a2, w = p->w;
+        MIST__BLOCKS(MIST__T u = x_[j_];
+                     MIST__T c = MIST__FN(mist__clamp11)(u);
+                     MIST__T v2 = MIST__FN(mist__v2)(ge, c);
+                     MIST__T h2 = MIST__FN(mist__v2)(gh, c);
+                     MIST__T r = (a + b * c * c) / (v2 * MIST__M(sqrt)(v2));
+                     MIST__T rh = (a2 + MIST__C(0) * c * c) / (h2 * MIST__M(sqrt)(h2));
+                     y_[j_] = u == u ? w * r + rh : MIST__C(0))
+        return;
+    }
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_phase_eval)(p, in[i]);
 }
 
@@ -3566,7 +3607,7 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
         bad[j] = again * (1 - ok);
     }
     for (j = 0; j < q->m; ++j)
-        out[q->at[j]] = bad[j] ? MIST__FN(mist__phase_sample_w)(p, xs[j]) : y[j];
+        out[q->at[j]] = bad[j] ? MIST__FN(mist__phase_drx)(p, xs[j]) : y[j];
     q->m = 0;
 }
 #endif
@@ -3604,17 +3645,16 @@ MIST__F MIST__HOT double mist__bsel(int c, double x, double y)
     return x;
 }
 #endif
-MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
-                                           MIST__T *out, size_t n)
+/* The Draine lobe's samples of a prepared medium (p: Draine, or a fog
+ * whose Draine lobe it is) at each in[i] = xi' (clamped to [0, 1]):
+ * mist__phase_dr, vectorised as said above where the table applies, else
+ * a loop over it. */
+MIST__F void MIST__FN(mist__phase_dr_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+                                        MIST__T *out, size_t n)
 {
     size_t i;
-    if (p && p->kind == 0 && p->w <= MIST__C(0)) {
-        MIST__FN(mist__impl_hg_sample_n)(p->g_hg, in, out, n);
-        return;
-    }
-#if !defined(MIST_NO_DRAINE) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
-    if (p && p->kind == 0 && p->w >= MIST__C(1) && p->c1 != MIST__C(0)
-        && p->g > MIST__C(-1) && p->g < MIST__C(1)
+#if defined(MIST__W_EXACT) || defined(MIST__DDV)
+    if (p->c1 != MIST__C(0) && p->g > MIST__C(-1) && p->g < MIST__C(1)
         && (!MIST__DBL || MIST__FN(mist__phase_tab)(p->g))) {   /* double: table's g */
         volatile MIST__T z0 = 0;
         MIST__T z = z0, one = z + 1;
@@ -3628,7 +3668,8 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
                 return;
             }
 #endif
-            for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__phase_sample_w)(p, in[i]);
+            for (i = 0; i < n; ++i)
+                out[i] = MIST__FN(mist__phase_drx)(p, MIST__FN(mist__clamp)(in[i], z, one));
             return;
         }
         MIST__W aw = fin > 0 ? (MIST__W)p->alpha : 1;
@@ -3656,7 +3697,8 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
             MIST__W uw = u1[j_];
             int k = MIST__FN(mist__phase_k)(xi);
             if (f_[j_] == 2 && !(uw >= (MIST__W)tab[k] && uw <= (MIST__W)tab[k + 1])) {
-                out[i_ + j_] = MIST__FN(mist__phase_sample_w)(p, x_[j_]);   /* no second step */
+                out[i_ + j_] = MIST__FN(mist__phase_drx)(p,     /* no second step */
+                    MIST__FN(mist__clamp)(x_[j_], MIST__C(0), MIST__C(1)));
             } else {
                 q.at[q.m] = i_ + j_; q.xi[q.m] = xi; q.u[q.m] = uw; q.eb[q.m] = e1[j_];
                 q.kb[q.m] = (MIST__W)tab[2 * MIST__PHASE_K + 2 + k]; q.again[q.m] = f_[j_] == 2;
@@ -3692,12 +3734,154 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
             MIST__T xi = MIST__FN(mist__clamp01)(x_[j_], z, one);
             out[i_ + j_] = !MIST__FN(mist__phase_wide)(tab, MIST__FN(mist__phase_k)(xi))
                            && MIST__FN(mist__draine_ddfin)(g, fin, a, xi, us_[j_], &u) ? u
-                           : MIST__FN(mist__phase_sample_w)(p, x_[j_]);)
+                           : MIST__FN(mist__phase_drx)(p, MIST__FN(mist__clamp)(x_[j_],
+                                                       MIST__C(0), MIST__C(1)));)
 #endif
         return;
     }
 #endif
+    for (i = 0; i < n; ++i)
+        out[i] = MIST__FN(mist__phase_drx)(p, MIST__FN(mist__clamp)(in[i], MIST__C(0), MIST__C(1)));
+}
+
+/* The fog mixture's batch (0 < w < 1): a prepared medium p, else the
+ * unprepared fog *f.  Per chunk of MIST__MIXC elements: (1) a
+ * branch-free pass picks each clamped xi's lobe and xi' as the scalar
+ * sampler does (mist__fog_pick's operations: the same lobe and xi', bit
+ * for bit; the clamp's -0 becomes +0 there, which no lobe sampler tells
+ * apart: each clamps xi' to [+0, 1] as its batch does); (2) the HG batch
+ * (mist_hg_sample_n: the scalar HG sample's values) runs over the whole
+ * chunk, ~0.3 ns an element, so that only the Draine elements are
+ * gathered, branch-free, into a list for the Draine lobe's batch sampler
+ * (prepared: mist__phase_dr_n; unprepared: the eq. 6 kernel where it
+ * applies, else a loop over mist_draine_sample), whose results are put
+ * back in place; (3) the few xi' within 1024 eps of a lobe's top (the
+ * scalar sampler's mirror, unprepared) take the scalar function.  So every
+ * value is the scalar function's, bit for bit.  The chunk is read before
+ * any of it is written: out == in is allowed.  Computing the Draine lobe
+ * for every element and selecting would pay it (~4-8 ns an element in
+ * float) for the HG elements too. */
+#define MIST__MIXC (32 * MIST__BLK)
+MIST__F void MIST__FN(mist__mix_n)(const MIST__FN(mist_phase) *p, const MIST__FOG *f,
+                                   const MIST__T *in, MIST__T *out, size_t n)
+{
+    MIST__T xs[MIST__MIXC], ys[MIST__MIXC], xd[MIST__MIXC];
+    short fl[MIST__MIXC];
+    unsigned short id[MIST__MIXC];
+    MIST__T w = p ? p->w : MIST__FN(mist__clamp)(f->w_d, MIST__C(0), MIST__C(1));
+    MIST__T ghg = p ? p->g_hg : f->g_hg, lim = MIST__C(1) - MIST__C(1024) * MIST__EPS;
+    volatile MIST__T z0 = 0;
+    MIST__T z = z0, one = z + 1;
+    size_t i0, j, m, nd;
+    int mr;
+    for (i0 = 0; i0 < n; i0 += m) {
+        m = n - i0 < (size_t)MIST__MIXC ? n - i0 : (size_t)MIST__MIXC;
+        mr = 0;
+        for (j = 0; j < m; ++j) {               /* mist__fog_pick at 0 < w < 1 */
+            MIST__T xi = MIST__FN(mist__clamp01)(in[i0 + j], z, one);
+            int dr = xi < w, c;
+            MIST__T lo = dr ? z : w, top = dr ? w : one, x = (xi - lo) / (top - lo);
+            xs[j] = x;
+            c = dr + 2 * (x > lim);             /* 0 HG, 1 Draine, >= 2 mirror */
+            fl[j] = (short)c;
+            mr |= c;
+        }
+        nd = 0;
+        for (j = 0; j < m; ++j) {               /* the Draine list, branch-free */
+            id[nd] = (unsigned short)j;
+            nd += (size_t)(fl[j] == 1);
+        }
+        for (j = 0; j < nd; ++j) xd[j] = xs[id[j]];
+        MIST__FN(mist__impl_hg_sample_n)(ghg, xs, ys, m);
+        if (mr & 2)                             /* the mirror: scalar, from in */
+            for (j = 0; j < m; ++j)
+                if (fl[j] >= 2)
+                    ys[j] = p ? MIST__FN(mist__phase_sample_w)(p, in[i0 + j])
+                              : MIST__FN(mist__impl_fog_sample)(*f, in[i0 + j]);
+        if (p) {
+            MIST__FN(mist__phase_dr_n)(p, xd, xd, nd);
+        } else {
+#if defined(MIST__DRAINE_V)
+            if (MIST__FN(mist__draine_vn)(f->g_d, f->alpha, 1)) {   /* eq. 6's kernel */
+                MIST__T c0, c1;
+                MIST__FN(mist__draine_c)(f->alpha, &c0, &c1);
+                MIST__FN(mist__draine_vk)(MIST__FN(mist__g)(f->g_d), f->alpha, c0, c1,
+                                          MIST__NULL, xd, xd, nd);
+            } else
+#endif
+            for (j = 0; j < nd; ++j)
+                xd[j] = MIST__FN(mist__impl_draine_sample)(f->g_d, f->alpha, xd[j]);
+        }
+        for (j = 0; j < nd; ++j) ys[id[j]] = xd[j];
+        for (j = 0; j < m; ++j) out[i0 + j] = ys[j];
+    }
+}
+
+/* 1 where a fog (w, sanitised, p->kind != 1) samples as a mixture */
+MIST__F int MIST__FN(mist__mix_w)(MIST__T w)
+{
+    return w > MIST__C(0) && w < MIST__C(1);
+}
+
+MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, const MIST__T *in,
+                                           MIST__T *out, size_t n)
+{
+    size_t i;
+    if (p && p->kind != 1 && !MIST__FN(mist__gt0)(p->w)) {
+        MIST__FN(mist__impl_hg_sample_n)(p->g_hg, in, out, n);
+        return;
+    }
+    if (p && p->kind != 1 && p->w == MIST__C(1)) {             /* Draine: xi' = xi */
+        MIST__FN(mist__phase_dr_n)(p, in, out, n);
+        return;
+    }
+#if !defined(__CUDA_ARCH__)             /* (the chunk's lists: 9 KB of stack) */
+    if (p && p->kind != 1 && MIST__FN(mist__mix_w)(p->w)) {   /* the fog mixture */
+        MIST__FN(mist__mix_n)(p, MIST__NULL, in, out, n);
+        return;
+    }
+#endif
     for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_phase_sample)(p, in[i]);
+}
+
+/* Fog density per steradian of each in[i] = u: mist_fog_eval(fog, u), in
+ * chunks of MIST__MIXC: the two lobes' batch densities, then the mixture
+ * as mist__fog_eval forms it. */
+MIST__F void MIST__FN(mist__impl_fog_eval_n)(MIST__FOG fog, const MIST__T *in, MIST__T *out,
+                                             size_t n)
+{
+    MIST__T hb[MIST__MIXC], db[MIST__MIXC];
+    MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
+    size_t i0, j, m;
+    for (i0 = 0; i0 < n; i0 += m) {
+        m = n - i0 < (size_t)MIST__MIXC ? n - i0 : (size_t)MIST__MIXC;
+        MIST__FN(mist__impl_hg_eval_n)(fog.g_hg, in + i0, hb, m);
+        MIST__FN(mist__impl_draine_eval_n)(fog.g_d, fog.alpha, in + i0, db, m);
+        for (j = 0; j < m; ++j) {
+            MIST__T d = w > MIST__C(0) ? db[j] : MIST__C(0);
+            MIST__T h = w < MIST__C(1) ? hb[j] : MIST__C(0);
+            out[i0 + j] = (MIST__C(1) - w) * h + w * d;
+        }
+    }
+}
+
+/* Fog sample of each in[i] = xi: mist_fog_sample(fog, xi).  A mixture as
+ * mist_phase_sample_n's (mist__mix_n); one lobe (w = 0 or 1): that lobe's
+ * batch where it gives the scalar values (HG; Draine by the eq. 6 kernel,
+ * else a loop over the scalar function, whose values the prepared batch
+ * would not give bit for bit). */
+MIST__F void MIST__FN(mist__impl_fog_sample_n)(MIST__FOG fog, const MIST__T *in, MIST__T *out,
+                                               size_t n)
+{
+    size_t i;
+    MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
+#if !defined(__CUDA_ARCH__)
+    if (MIST__FN(mist__mix_w)(w)) {
+        MIST__FN(mist__mix_n)(MIST__NULL, &fog, in, out, n);
+        return;
+    }
+#endif
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_fog_sample)(fog, in[i]);
 }
 #endif /* !MIST_NO_FOG */
 
@@ -4367,6 +4551,7 @@ MIST__F void MIST__FN(mist__impl_tab_sample_n)(const MIST__TAB *t, const MIST__T
 #undef MIST__BLOCKS
 #undef MIST__BLOCKS_FB
 #undef MIST__BLK
+#undef MIST__MIXC
 
 #ifndef MIST_NO_HFOG
 /* ======================================================================== */

@@ -63,6 +63,8 @@ MIST_FUNC double use_all(double x)
         mist_draine_sample_n(0.5, 2.0, a, a, 3);   mist_draine_sample_nf(0.5f, 2.0f, af, af, 3);
         mist_rayleigh_eval_n(a, a, 3);             mist_rayleigh_eval_nf(af, af, 3);
         mist_rayleigh_sample_n(a, a, 3);           mist_rayleigh_sample_nf(af, af, 3);
+        mist_fog_eval_n(fog, a, a, 3);             mist_fog_eval_nf(fogf, af, af, 3);
+        mist_fog_sample_n(fog, a, a, 3);           mist_fog_sample_nf(fogf, af, af, 3);
         s += a[1];
         sf += af[1];
     }
