@@ -239,6 +239,44 @@ static double b_fog_samplef10(void)    LOOP(float, mist_fog_samplef(fog10f, xf[i
 static double b_fog_evalf10(void)      LOOP(float, mist_fog_evalf(fog10f, uf[i]))
 
 static void prepared_rows(void);
+/* the compact prepared form (mist_phasec_*) of the same media */
+static mist_phasecf pc_fogf, pc_drf;
+static mist_phasec pc_fog, pc_dr;
+static double k_fog_samplef(void)  LOOP(float, mist_phasec_samplef(&pc_fogf, xf[i]))
+static double k_fog_evalf(void)    LOOP(float, mist_phasec_evalf(&pc_fogf, uf[i]))
+static double k_dr_samplef(void)   LOOP(float, mist_phasec_samplef(&pc_drf, xf[i]))
+static double k_fog_sample(void)   LOOP(double, mist_phasec_sample(&pc_fog, xd[i]))
+static double k_dr_sample(void)    LOOP(double, mist_phasec_sample(&pc_dr, xd[i]))
+static double k_fog_sample_dirf(void)
+{
+    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
+    float pdf, s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        wo = mist_phasec_sample_dirf(&pc_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
+        s += wo.x + pdf;
+    }
+    return s;
+}
+static double k_phase_fog_sample_dirf(void)
+{
+    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
+    float pdf, s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        wo = mist_phase_sample_dirf(&ph_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
+        s += wo.x + pdf;
+    }
+    return s;
+}
+/* preparing: a new medium per call (the d = 5 .. 50 um fits' parameters) */
+static double k_prep_fogf(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_phasecf p = mist_phasec_fogf(mist_fog_makef(0.98f, 0.5f + 0.1f * xf[i], 22.f, 0.48f));
+    s_ += p.f0[0]; } return s_; }
+static double k_prep_fog(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_phasec p = mist_phasec_fog(mist_fog_make(0.98, 0.5 + 0.1 * xd[i], 22., 0.48));
+    s_ += p.f0[0]; } return s_; }
+
 static double b_hg_sample_dirf(void)
 {
     mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
@@ -1021,6 +1059,39 @@ static double c_fog_makef(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
 static double c_fog_make(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
     mist_fog f = mist_fog_make(ud[i], 0.5, 17. * xd[i], xd[N - 1 - i]); s_ += f.alpha; } return s_; }
 
+static void compact_rows(void)
+{
+    pc_fogf = mist_phasec_fogf(fog10f);
+    pc_fog = mist_phasec_fog(fog10);
+    pc_drf = mist_phasec_drainef(0.5f, 17.f);
+    pc_dr = mist_phasec_draine(0.5, 17.);
+    printf("\nCompact prepared (mist_phasec_*: %zu bytes float, %zu double) against the full "
+           "prepared form\n(mist_phase_*: %zu bytes float, %zu double) and the unprepared "
+           "functions, same media, same run:\n", sizeof(mist_phasecf), sizeof(mist_phasec),
+           sizeof(mist_phasef), sizeof(mist_phase));
+    row("mist_phasec_samplef (fog 10 um)", k_fog_samplef, "mist_phase_samplef", b_phase_fog_samplef);
+    row("mist_phasec_samplef (fog 10 um)", k_fog_samplef, "mist_fog_samplef", b_fog_samplef_rt);
+    row("mist_phasec_samplef (Draine .5, 17)", k_dr_samplef, "mist_phase_samplef",
+        b_phase_draine_samplef);
+    row("mist_phasec_samplef (Draine .5, 17)", k_dr_samplef, "mist_draine_samplef",
+        b_draine_samplef_rt);
+    row("mist_phasec_sample (fog 10 um)", k_fog_sample, "mist_phase_sample", b_phase_fog_sample);
+    row("mist_phasec_sample (fog 10 um)", k_fog_sample, "mist_fog_sample", b_fog_sample10);
+    row("mist_phasec_sample (Draine .5, 17)", k_dr_sample, "mist_phase_sample",
+        b_phase_draine_sample);
+    row("mist_phasec_sample (Draine .5, 17)", k_dr_sample, "mist_draine_sample",
+        b_draine_sample_rt);
+    row("mist_phasec_evalf (fog 10 um)", k_fog_evalf, "mist_phase_evalf", b_phase_fog_evalf);
+    row("mist_phasec_sample_dirf (fog 10 um)", k_fog_sample_dirf, "mist_phase_sample_dirf",
+        k_phase_fog_sample_dirf);
+    {
+        double lo, hi, cf = measure(k_prep_fogf, &lo, &hi), cd = measure(k_prep_fog, &lo, &hi);
+        printf("preparing a fog: mist_phasec_fogf %.3f us, mist_phasec_fog %.3f us; "
+               "mist_phase_fogf %.1f us, mist_phase_fog %.1f us (medians of %d)\n",
+               cf / 1e3, cd / 1e3, prep_us(2), prep_us(3), REPS);
+    }
+}
+
 static void coverage_rows(void)
 {
     bench_fn base;
@@ -1380,6 +1451,10 @@ int main(int argc, char **argv)
         batch_rows();
         return 0;
     }
+    if (argc > 1 && strcmp(argv[1], "compact") == 0) {   /* ./mist_bench compact */
+        compact_rows();
+        return 0;
+    }
 
     base = b_hg_eval_printed;
     row("eq. 2 HG eval as printed (float)", b_hg_eval_printed, NULL, NULL);
@@ -1419,6 +1494,7 @@ int main(int argc, char **argv)
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, NULL);
     renderer_rows();
     prepared_rows();
+    compact_rows();
     alternatives();
     hg_target_rows();
     batch_rows();

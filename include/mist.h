@@ -419,6 +419,24 @@ typedef struct mist_phasef {
                                    sampler's terms of g (mist__hg_par) */
 } mist_phasef;
 
+/* A compact prepared phase function (see "Compact prepared phase functions"):
+ * the fog mixture or Draine as mist_phase without its start table, 60 bytes in
+ * float, for a GPU closure's registers or shared memory (mist_phasec_fog /
+ * _draine, then mist_phasec_eval / _sample / _sample_dir).  The same fields
+ * as mist_phase's first ones; internal: build it with those functions. */
+typedef struct mist_phasec {
+    int    kind;                /* 0, 2 (as mist_phase) */
+    double g_hg, g, alpha, w;
+    double ge, c0, c1, a1, b1, a2;
+    double f0[4];
+} mist_phasec;
+typedef struct mist_phasecf {
+    int    kind;
+    float  g_hg, g, alpha, w;
+    float  ge, c0, c1, a1, b1, a2;
+    float  f0[4];
+} mist_phasecf;
+
 /* A tabulated phase function (see "Tabulated phase functions"): this
  * header, then its arrays, in the caller's memory (mist_tab_bytes bytes,
  * aligned as for a double: malloc's).  Built by mist_tab_init; the fields
@@ -755,6 +773,21 @@ MIST__API double mist_phase_sample(const mist_phase *p, double xi)
     { return mist__impl_phase_sample(p, xi); }
 MIST__API float mist_phase_samplef(const mist_phasef *p, float xi)
     { return mist__impl_phase_samplef(p, xi); }
+/* Compact prepared: the fog or Draine without the start table (60 bytes in float) */
+MIST__API mist_phasec mist_phasec_fog(mist_fog fog) { return mist__impl_phasec_fog(fog); }
+MIST__API mist_phasecf mist_phasec_fogf(mist_fogf fog) { return mist__impl_phasec_fogf(fog); }
+MIST__API mist_phasec mist_phasec_draine(double g, double alpha)
+    { return mist__impl_phasec_draine(g, alpha); }
+MIST__API mist_phasecf mist_phasec_drainef(float g, float alpha)
+    { return mist__impl_phasec_drainef(g, alpha); }
+MIST__API double mist_phasec_eval(const mist_phasec *p, double u)
+    { return mist__impl_phasec_eval(p, u); }
+MIST__API float mist_phasec_evalf(const mist_phasecf *p, float u)
+    { return mist__impl_phasec_evalf(p, u); }
+MIST__API double mist_phasec_sample(const mist_phasec *p, double xi)
+    { return mist__impl_phasec_sample(p, xi); }
+MIST__API float mist_phasec_samplef(const mist_phasecf *p, float xi)
+    { return mist__impl_phasec_samplef(p, xi); }
 #endif
 
 /* Directions: a scattered direction about the propagation direction wi (any non-zero
@@ -804,6 +837,12 @@ MIST__API mist_vec3 mist_phase_sample_dir(const mist_phase *p, mist_vec3 wi, dou
 MIST__API mist_vec3f mist_phase_sample_dirf(const mist_phasef *p, mist_vec3f wi, float xi1,
                                             float xi2, float *pdf)
     { return mist__impl_phase_sample_dirf(p, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3 mist_phasec_sample_dir(const mist_phasec *p, mist_vec3 wi, double xi1,
+                                           double xi2, double *pdf)
+    { return mist__impl_phasec_sample_dir(p, wi, xi1, xi2, pdf); }
+MIST__API mist_vec3f mist_phasec_sample_dirf(const mist_phasecf *p, mist_vec3f wi, float xi1,
+                                             float xi2, float *pdf)
+    { return mist__impl_phasec_sample_dirf(p, wi, xi1, xi2, pdf); }
 #endif
 
 /* Batch forms: out[i] = the scalar function of in[i] for i < n, bit for bit; out may
@@ -2884,21 +2923,22 @@ MIST__F MIST__T MIST__FN(mist__impl_fog_sample)(MIST__FOG fog, MIST__T xi)
 /* ======================================================================== */
 
 #define MIST__PHASE MIST__FN(mist_phase)
+#define MIST__PHC MIST__FN(mist_phasec)
 
-MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g,
-                                               MIST__T alpha, MIST__T w)
+/* The parameters' part of a prepared phase function (all of a compact one:
+ * see "Compact prepared phase functions"): the sanitised parameters, the
+ * density's lobes, Draine's weights and F(0) for +g and -g. */
+MIST__F MIST__PHC MIST__FN(mist__phasec_make)(int kind, MIST__T g_hg, MIST__T g,
+                                              MIST__T alpha, MIST__T w)
 {
-    MIST__PHASE p;
+    MIST__PHC p;
     MIST__T c0, c1, cn, nh, nd;
-    int i, nodes = 0;
+    int i;
 #ifdef MIST__W
     MIST__W c0w, c1w, fw;
 #endif
     p.kind  = kind;
     p.g_hg  = MIST__FN(mist__g)(g_hg);
-#if defined(MIST__W_EXACT)
-    MIST__FN(mist__hg_par)(p.g_hg, p.hg);
-#endif
     p.g     = MIST__FN(mist__g)(g);
     p.alpha = alpha > MIST__C(0) ? alpha : MIST__C(0);
     p.w     = MIST__FN(mist__clamp)(w, MIST__C(0), MIST__C(1));
@@ -2922,12 +2962,8 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         p.ge = p.g; p.a1 = nd * c0; p.b1 = nd * c1;
         p.a2 = (MIST__C(1) - p.w) * nh;
     }
-    if (p.kind == 0 && p.w <= MIST__C(0)) {     /* HG: no Draine lobe, f0 and the table
-                                                 * unused (zeroed: filling the table cost
-                                                 * 0.3 us, measured; F(0) of the lobe ~25
-                                                 * ns of an HG medium's 60, mist_bench) */
+    if (p.kind == 0 && p.w <= MIST__C(0)) {     /* HG: no Draine lobe, f0 unused */
         for (i = 0; i < 4; ++i) p.f0[i] = MIST__C(0);
-        for (i = 0; i < 3 * MIST__PHASE_K + 2; ++i) p.tab[i] = MIST__C(0);
         return p;
     }
 #ifdef MIST__W
@@ -2944,6 +2980,30 @@ MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g
         p.f0[2 * i + 1] = MIST__C(0);
 #endif
     }
+    return p;
+}
+
+MIST__F MIST__PHASE MIST__FN(mist__phase_make)(int kind, MIST__T g_hg, MIST__T g,
+                                               MIST__T alpha, MIST__T w)
+{
+    MIST__PHASE p;
+    MIST__PHC h = MIST__FN(mist__phasec_make)(kind, g_hg, g, alpha, w);
+    MIST__T c0 = h.c0, c1 = h.c1, cn;
+    int i, nodes = 0;
+    p.kind = h.kind; p.g_hg = h.g_hg; p.g = h.g; p.alpha = h.alpha; p.w = h.w;
+    p.ge = h.ge; p.c0 = h.c0; p.c1 = h.c1; p.a1 = h.a1; p.b1 = h.b1; p.a2 = h.a2;
+    for (i = 0; i < 4; ++i) p.f0[i] = h.f0[i];
+#if defined(MIST__W_EXACT)
+    MIST__FN(mist__hg_par)(p.g_hg, p.hg);
+#endif
+    if (p.kind == 0 && p.w <= MIST__C(0)) {     /* HG: no Draine lobe, f0 and the table
+                                                 * unused (zeroed: filling the table cost
+                                                 * 0.3 us, measured; F(0) of the lobe ~25
+                                                 * ns of an HG medium's 60, mist_bench) */
+        for (i = 0; i < 3 * MIST__PHASE_K + 2; ++i) p.tab[i] = MIST__C(0);
+        return p;
+    }
+    cn = c0 + c1 * ((MIST__C(1) + MIST__C(2) * p.g * p.g) / MIST__C(3));
     /* the start table: the exact u at xi = j/K and the slopes du/dxi / K =
      * 2 cn V^3 / ((1-g^2)(c0 + c1 u^2) K), limited to 3x the neighbouring
      * secants (finite where the density is 0, and a monotone interpolant) */
@@ -3028,17 +3088,25 @@ MIST__F MIST__T MIST__FN(mist__phase_lobe)(MIST__T g, MIST__T a, MIST__T b, MIST
     return (a + b * u * u) / (v2 * MIST__M(sqrt)(v2));
 }
 
-/* Density per steradian.  Domain: u in [-1, 1] (clamped; NaN gives 0). */
-MIST__F MIST__T MIST__FN(mist__impl_phase_eval)(const MIST__PHASE *p, MIST__T u)
+/* The density of a prepared function's lobes (mist_phase, mist_phasec) at
+ * u in [-1, 1] (clamped; NaN gives 0). */
+MIST__F MIST__T MIST__FN(mist__phase_ev)(int kind, MIST__T ge, MIST__T a1, MIST__T b1,
+                                         MIST__T w, MIST__T g_hg, MIST__T a2, MIST__T u)
 {
     MIST__T r;
     if (!(u == u)) return MIST__C(0);
     u = MIST__FN(mist__clamp)(u, MIST__C(-1), MIST__C(1));
-    if (!p) return MIST__C(MIST__INV4PI);
-    r = MIST__FN(mist__phase_lobe)(p->ge, p->a1, p->b1, u);
-    if (p->kind == 2)
-        r = p->w * r + MIST__FN(mist__phase_lobe)(p->g_hg, p->a2, MIST__C(0), u);
+    r = MIST__FN(mist__phase_lobe)(ge, a1, b1, u);
+    if (kind == 2)
+        r = w * r + MIST__FN(mist__phase_lobe)(g_hg, a2, MIST__C(0), u);
     return r;
+}
+
+/* Density per steradian.  Domain: u in [-1, 1] (clamped; NaN gives 0). */
+MIST__F MIST__T MIST__FN(mist__impl_phase_eval)(const MIST__PHASE *p, MIST__T u)
+{
+    if (!p) return u == u ? MIST__C(MIST__INV4PI) : MIST__C(0);
+    return MIST__FN(mist__phase_ev)(p->kind, p->ge, p->a1, p->b1, p->w, p->g_hg, p->a2, u);
 }
 
 /* The HG lobe's sample at xi: float with the terms of g read from the
@@ -3159,8 +3227,72 @@ MIST__F MIST__API_HOT MIST__T MIST__FN(mist__impl_phase_sample)(const MIST__PHAS
     return MIST__FN(mist__phase_sample_w)(p, xi);
 }
 
+/* ======================================================================== */
+/* Compact prepared phase functions                                         */
+/* mist_phasec: the fog mixture or Draine prepared without the start table  */
+/* (60 bytes in float, 120 in double, against mist_phase's 1632 and 3208),  */
+/* for a GPU closure, where the full table per closure does not fit in     */
+/* registers or shared memory.  It keeps what needs no table: the           */
+/* sanitised parameters, the density's lobes (mist_phase_eval's arithmetic, */
+/* the same values), Draine's weights and F(0) for +g and -g in the wide    */
+/* type (hi + lo).  Sampling picks the lobe as mist_fog_sample; the HG lobe */
+/* is mist_hg_sample's; the Draine lobe is the unprepared sampler's (float: */
+/* [JD23 eq. 6] and its certificate, mist__draine_try6; double: eq. 6 and   */
+/* the compensated finish) finished with the stored F(0), where the         */
+/* unprepared sampler computes it, so the samples meet the same bar         */
+/* |u - u*| <= 4 ulp(u*) + 4 eps xi du / dxi (tests/test_accuracy.c) and    */
+/* the costs lie between the prepared and the unprepared sampler's         */
+/* (bench/mist_bench.c, "Compact prepared").  Values may differ from       */
+/* mist_phase_sample's and mist_fog_sample's in the last bits (each within */
+/* the bar); the density is mist_phase_eval's bit for bit.                  */
+/* DOMAIN AND BAD INPUT: as mist_phase (the constructors sanitise as       */
+/* mist_fog_make); a NULL pointer is the isotropic phase function.         */
+/* ======================================================================== */
+
+MIST__F MIST__PHC MIST__FN(mist__impl_phasec_fog)(MIST__FOG fog)
+{
+    return MIST__FN(mist__phasec_make)(0, fog.g_hg, fog.g_d, fog.alpha, fog.w_d);
+}
+
+MIST__F MIST__PHC MIST__FN(mist__impl_phasec_draine)(MIST__T g, MIST__T alpha)
+{
+    return MIST__FN(mist__phasec_make)(0, MIST__C(0), g, alpha, MIST__C(1));
+}
+
+/* Density per steradian.  Domain: u in [-1, 1] (clamped; NaN gives 0). */
+MIST__F MIST__T MIST__FN(mist__impl_phasec_eval)(const MIST__PHC *p, MIST__T u)
+{
+    if (!p) return u == u ? MIST__C(MIST__INV4PI) : MIST__C(0);
+    return MIST__FN(mist__phase_ev)(p->kind, p->ge, p->a1, p->b1, p->w, p->g_hg, p->a2, u);
+}
+
+/* u = cos theta from xi in [0, 1] (clamped; NaN taken as 0). */
+MIST__F MIST__T MIST__FN(mist__impl_phasec_sample)(const MIST__PHC *p, MIST__T xi)
+{
+    MIST__T x, sg;
+    int dr;
+    if (!p) return MIST__FN(mist__impl_hg_sample)(MIST__C(0), xi);
+    if (!MIST__FN(mist__gt0)(p->w)) return MIST__FN(mist__impl_hg_sample)(p->g_hg, xi);
+    xi = MIST__FN(mist__clamp)(xi, MIST__C(0), MIST__C(1));
+    dr = MIST__FN(mist__fog_pick)(xi, p->w, &x, &sg);
+    if (sg < MIST__C(0))            /* xi' within 1024 eps of 1: the mirror */
+        return dr ? -MIST__FN(mist__impl_draine_sample)(-p->g, p->alpha, x)
+                  : -MIST__FN(mist__impl_hg_sample)(-p->g_hg, x);
+    if (!dr) return MIST__FN(mist__impl_hg_sample)(p->g_hg, x);
+    return MIST__FN(mist__draine_sample)(p->g, p->alpha, p->c0, p->c1, x, p->f0, MIST__NULL);
+}
+
 #ifndef MIST_NO_DIR
 MIST__F MIST__V3 MIST__FN(mist__impl_dir_from_cos)(MIST__V3 wi, MIST__T u, MIST__T xi);
+
+/* Scattered direction around wi and its pdf (may be NULL), as *_sample_dir. */
+MIST__F MIST__V3 MIST__FN(mist__impl_phasec_sample_dir)(const MIST__PHC *p, MIST__V3 wi,
+                                                        MIST__T xi1, MIST__T xi2, MIST__T *pdf)
+{
+    MIST__T u = MIST__FN(mist__impl_phasec_sample)(p, xi1);
+    if (pdf) *pdf = MIST__FN(mist__impl_phasec_eval)(p, u);
+    return MIST__FN(mist__impl_dir_from_cos)(wi, u, xi2);
+}
 
 /* Scattered direction around the propagation direction wi and its pdf
  * (= mist_phase_eval at its cosine; pdf may be NULL), as *_sample_dir. */
@@ -3173,6 +3305,7 @@ MIST__F MIST__V3 MIST__FN(mist__impl_phase_sample_dir)(const MIST__PHASE *p, MIS
 }
 #endif
 #undef MIST__PHASE
+#undef MIST__PHC
 
 /* ======================================================================== */
 /* Droplet-size fits [JD23 supplemental, eq. 7-22]                          */
@@ -3760,7 +3893,9 @@ MIST__F void MIST__FN(mist__phase_dr_n)(const MIST__FN(mist_phase) *p, const MIS
  * value is the scalar function's, bit for bit.  The chunk is read before
  * any of it is written: out == in is allowed.  Computing the Draine lobe
  * for every element and selecting would pay it (~4-8 ns an element in
- * float) for the HG elements too. */
+ * float) for the HG elements too.  Chunks of 1024: the chunk's arrays take
+ * 16 KB of stack in float, 28 KB in double (chunks of 256 cost ~1.1x the
+ * time: the Draine lobe's pending block is flushed once a chunk). */
 #define MIST__MIXC (32 * MIST__BLK)
 MIST__F void MIST__FN(mist__mix_n)(const MIST__FN(mist_phase) *p, const MIST__FOG *f,
                                    const MIST__T *in, MIST__T *out, size_t n)
@@ -3835,7 +3970,7 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
         MIST__FN(mist__phase_dr_n)(p, in, out, n);
         return;
     }
-#if !defined(__CUDA_ARCH__)             /* (the chunk's lists: 9 KB of stack) */
+#if !defined(__CUDA_ARCH__)      /* (the chunk's arrays: 16-28 KB of stack) */
     if (p && p->kind != 1 && MIST__FN(mist__mix_w)(p->w)) {   /* the fog mixture */
         MIST__FN(mist__mix_n)(p, MIST__NULL, in, out, n);
         return;
@@ -3850,6 +3985,10 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
 MIST__F void MIST__FN(mist__impl_fog_eval_n)(MIST__FOG fog, const MIST__T *in, MIST__T *out,
                                              size_t n)
 {
+#if defined(__CUDA_ARCH__)                  /* (no 16 KB of stack a thread) */
+    size_t i;
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_fog_eval)(fog, in[i]);
+#else
     MIST__T hb[MIST__MIXC], db[MIST__MIXC];
     MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
     size_t i0, j, m;
@@ -3863,6 +4002,7 @@ MIST__F void MIST__FN(mist__impl_fog_eval_n)(MIST__FOG fog, const MIST__T *in, M
             out[i0 + j] = (MIST__C(1) - w) * h + w * d;
         }
     }
+#endif
 }
 
 /* Fog sample of each in[i] = xi: mist_fog_sample(fog, xi).  A mixture as
