@@ -23,6 +23,8 @@
  *   // sample and evaluate through a pointer: same results, less work.
  *   mist_phase ph = mist_phase_fog(fog);
  *   mist_vec3 wo2 = mist_phase_sample_dir(&ph, wi, xi1, xi2, &pdf);
+ *   // Compact (60 bytes in float, for a GPU closure): the fog or Draine.
+ *   mist_phasecf pc = mist_phasec_fogf(mist_fog_from_diameterf(10.0f));
  *
  *   // Height fog along a ray: a background seen through it.
  *   mist_rgb c = mist_hfog_apply(&hfog, origin, dir, length, background);
@@ -45,7 +47,7 @@
  *
  * ACCURACY (eps = 2^-53 double, 2^-24 float; worst as the tests print it)
  *   function                   bar                                  worst
- *   *_sample, mist_phase_*     |u - u*| <= 4 ulp(u*)                double 0.250,
+ *   *_sample, mist_phase[c]_*  |u - u*| <= 4 ulp(u*)                double 0.250,
  *     (scalar, prepared,         + 4 eps xi du* / dxi, u* the float128 float 0.125
  *     batch)                     inverse CDF; monotone in xi          of the bar
  *   mist_hg_sample (double)    correctly rounded in practice        0 of 40000 not
