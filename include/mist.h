@@ -3748,7 +3748,7 @@ MIST__F void MIST__FN(mist__phase_finish)(const MIST__FN(mist_phase) *p, MIST__W
 #endif
 
 /* Prepared sample of each in[i] = xi: mist_phase_sample(p, xi).  HG as
- * mist_hg_sample_n; in double where fma is one instruction, Draine and
+ * mist_hg_sample_n; the fog mixture by lobes (mist__mix_n, below); in double where fma is one instruction, Draine and
  * Cornette-Shanks vectorised as said below the float code
  * (./build/mist_bench, g .5, alpha 17: ~4x the scalar loop; the step's
  * selects are written apart in mist__draine_dd1, which gcc would otherwise

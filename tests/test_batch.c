@@ -13,7 +13,10 @@
  * limit's edge; alpha 0; NaN parameters), xi = w_d and its neighbours
  * (the lobe's pick), each lobe's mirror edge xi' = 1 - 1024 eps and
  * around it, xi near 0 and 1, over lengths across its chunks of 1024
- * (MIST__MIXC) and the Draine blocks of 32; every path (HG, Draine, mirror) reached, counted.
+ * (MIST__MIXC) and the Draine blocks of 32; every path (HG, Draine,
+ * mirror) reached, counted.  There too the compact form of each fog
+ * (mist_phasec_eval: mist_phase_eval's values bit for bit, bad input too;
+ * mist_phasec_sample of bad xi that of the clamped xi).
  *
  * Inputs: random values over and beyond the domain, and the edges and bad
  * input of DOMAIN AND BAD INPUT (NaN, +-inf, +-0, +-1 and their neighbours,
@@ -346,6 +349,27 @@ static int mix_##T(T gh, T gd, T a, T w, mt_rng *r, long cnt[3])                
                 for (i = 0; i < m; ++i) out[i] = x0[i];                           \
             }                                                                     \
         }                                                                         \
+    /* the compact form of the same fog (mist_phasec_*): its density is    */ \
+    /* mist_phase_eval's bit for bit, bad input too; its samples lie in     */ \
+    /* [-1, 1] and take bad xi as the clamp does (NaN as 0)                 */ \
+    {                                                                             \
+        CAT(mist_phasec, S) c = CAT(mist_phasec_fog, S)(f);                       \
+        for (i = 0; i < NMAX; ++i) {                                              \
+            T u = 2 * in[i] - 1, xi = in[i], xc, us;                              \
+            T e0 = CAT(mist_phase_eval, S)(&p, u), e1 = CAT(mist_phasec_eval, S)(&c, u); \
+            xc = xi == xi ? (xi < 0 ? 0 : xi > 1 ? 1 : xi) : 0;                   \
+            us = CAT(mist_phasec_sample, S)(&c, xi);                              \
+            if (!bits_##T(e0, e1) || !(us >= -1 && us <= 1)                      \
+                || !bits_##T(us, CAT(mist_phasec_sample, S)(&c, xc))) {          \
+                if (!bad)                                                         \
+                    printf("compact%s g_hg=%a g_d=%a alpha=%a w=%a: x=%a eval %a, " \
+                           "prepared %a; sample %a\n", #S, (double)gh, (double)gd, \
+                           (double)a, (double)w, (double)xi, (double)e1, (double)e0, \
+                           (double)us);                                           \
+                ++bad;                                                            \
+            }                                                                     \
+        }                                                                         \
+    }                                                                             \
     return bad;                                                                   \
 }
 
@@ -391,8 +415,9 @@ int main(void)
             bd += mix_double(q[0], q[1], q[2], q[3], &r, i ? cd : c10);
             bf += mix_float((float)q[0], (float)q[1], (float)q[2], (float)q[3], &r, cf);
         }
-        mt_check(bd == 0 && bf == 0, "fog mixture batches at the edges: %d double, %d float "
-                 "elements not the scalar functions'", bd, bf);
+        mt_check(bd == 0 && bf == 0, "fog mixture batches at the edges (and the compact "
+                 "form's density, bad xi): %d double, %d float elements not the scalar "
+                 "functions'", bd, bf);
         mt_check(c10[0] > 0 && c10[1] > 0 && c10[2] > 0 && cd[2] > 0 && cf[2] > 0,
                  "the edges reach every path: 10 um fog HG %ld, Draine %ld, mirror %ld; "
                  "mirror: double %ld, float %ld", c10[0], c10[1], c10[2], cd[2], cf[2]);
