@@ -583,8 +583,9 @@ static void scalar_tests(void)
             s = compact(s);
             test_scalar(&s, 0);
         }
-        for (i = 0; i < NELEM(G_GRID); ++i)     /* the compact form: alpha 1, 250, +inf */
-            for (j = 2; j < NELEM(A_GRID); j += 2) {
+        for (i = 0; i < NELEM(G_GRID); ++i)     /* the compact form: g 0, .3, -.9, */
+            for (j = 2; j < NELEM(A_GRID); j += 2) {   /* +-.999; alpha 1, 250, +inf */
+                if (i != 0 && i != 3 && i < 6) continue;
                 s = compact(make_spec(K_DRAINE, fl, G_GRID[i], A_GRID[j]));
                 test_scalar(&s, 0);
             }
@@ -612,6 +613,8 @@ static void dir_tests(void)
         sp[ns++] = make_spec(K_CS, fl, -0.4, 1);
         sp[ns++] = make_spec(K_RAYLEIGH, fl, 0, 0);
         sp[ns++] = make_fog(fl, 10);
+        /* the compact forms: at +z and a general wi (the frame is every
+         * sampler's, tested above at all six) */
         sp[ns++] = compact(make_fog(fl, 10));
         sp[ns++] = compact(make_spec(K_DRAINE, fl, 0.6, 250));
         /* g = 0.999 in double only: a float sample there is u = 1 exactly
@@ -620,7 +623,8 @@ static void dir_tests(void)
         if (!fl) sp[ns++] = make_spec(K_HG, fl, 0.999, 0);
         for (i = 0; i < ns; ++i)
             for (w = 0; w < 6; ++w)
-                test_dir(&sp[i], WI[w], WI_NAME[w], FRAME_OK);
+                if (!sp[i].compact || w == 0 || w == 2)
+                    test_dir(&sp[i], WI[w], WI_NAME[w], FRAME_OK);
     }
 }
 
