@@ -141,7 +141,8 @@
  *   without errno (-fno-math-errno, implied by -ffast-math).  The fog
  *   mixture's samplers (mist_fog_sample_n, mist_phase_sample_n of a fog)
  *   sort each chunk's xi by lobe and run each lobe's batch (mist__mix_n);
- *   in CUDA device code they are loops over the scalar function.
+ *   in CUDA device code, and in double where fma is no instruction (no
+ *   lobe's batch vectorises there), they loop over the scalar function.
  *
  * FAST MATH
  *   Compiled with the includer's -ffast-math mist would break (gcc's
@@ -3899,6 +3900,25 @@ MIST__F void MIST__FN(mist__phase_dr_n)(const MIST__FN(mist_phase) *p, const MIS
  * 16 KB of stack in float, 28 KB in double (chunks of 256 cost ~1.1x the
  * time: the Draine lobe's pending block is flushed once a chunk). */
 #define MIST__MIXC (32 * MIST__BLK)
+/* The unprepared fog's Draine lobe at each in[i] = xi' in [0, 1]:
+ * mist_draine_sample's values (its eq. 6 kernel where that applies, else a
+ * loop; not the prepared batch, whose values differ in the last bit). */
+MIST__F void MIST__FN(mist__fog_dr_n)(const MIST__FOG *f, const MIST__T *in, MIST__T *out,
+                                      size_t n)
+{
+    size_t i;
+#if defined(MIST__DRAINE_V)
+    if (MIST__FN(mist__draine_vn)(f->g_d, f->alpha, 1)) {      /* eq. 6's kernel */
+        MIST__T c0, c1;
+        MIST__FN(mist__draine_c)(f->alpha, &c0, &c1);
+        MIST__FN(mist__draine_vk)(MIST__FN(mist__g)(f->g_d), f->alpha, c0, c1, MIST__NULL,
+                                  in, out, n);
+        return;
+    }
+#endif
+    for (i = 0; i < n; ++i) out[i] = MIST__FN(mist__impl_draine_sample)(f->g_d, f->alpha, in[i]);
+}
+
 MIST__F void MIST__FN(mist__mix_n)(const MIST__FN(mist_phase) *p, const MIST__FOG *f,
                                    const MIST__T *in, MIST__T *out, size_t n)
 {
@@ -3935,20 +3955,8 @@ MIST__F void MIST__FN(mist__mix_n)(const MIST__FN(mist_phase) *p, const MIST__FO
                 if (fl[j] >= 2)
                     ys[j] = p ? MIST__FN(mist__phase_sample_w)(p, in[i0 + j])
                               : MIST__FN(mist__impl_fog_sample)(*f, in[i0 + j]);
-        if (p) {
-            MIST__FN(mist__phase_dr_n)(p, xd, xd, nd);
-        } else {
-#if defined(MIST__DRAINE_V)
-            if (MIST__FN(mist__draine_vn)(f->g_d, f->alpha, 1)) {   /* eq. 6's kernel */
-                MIST__T c0, c1;
-                MIST__FN(mist__draine_c)(f->alpha, &c0, &c1);
-                MIST__FN(mist__draine_vk)(MIST__FN(mist__g)(f->g_d), f->alpha, c0, c1,
-                                          MIST__NULL, xd, xd, nd);
-            } else
-#endif
-            for (j = 0; j < nd; ++j)
-                xd[j] = MIST__FN(mist__impl_draine_sample)(f->g_d, f->alpha, xd[j]);
-        }
+        if (p) MIST__FN(mist__phase_dr_n)(p, xd, xd, nd);
+        else MIST__FN(mist__fog_dr_n)(f, xd, xd, nd);
         for (j = 0; j < nd; ++j) ys[id[j]] = xd[j];
         for (j = 0; j < m; ++j) out[i0 + j] = ys[j];
     }
@@ -3972,7 +3980,10 @@ MIST__F void MIST__FN(mist__impl_phase_sample_n)(const MIST__FN(mist_phase) *p, 
         MIST__FN(mist__phase_dr_n)(p, in, out, n);
         return;
     }
-#if !defined(__CUDA_ARCH__)      /* (the chunk's arrays: 16-28 KB of stack) */
+#if !defined(__CUDA_ARCH__) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
+    /* (not in device code: the chunk's arrays take 16-28 KB of stack; not
+     * in double without fma as one instruction, where neither lobe's batch
+     * vectorises: there sorting cost 1.1x the loop, gcc 12 -O2, measured) */
     if (p && p->kind != 1 && MIST__FN(mist__mix_w)(p->w)) {   /* the fog mixture */
         MIST__FN(mist__mix_n)(p, MIST__NULL, in, out, n);
         return;
@@ -4008,17 +4019,23 @@ MIST__F void MIST__FN(mist__impl_fog_eval_n)(MIST__FOG fog, const MIST__T *in, M
 }
 
 /* Fog sample of each in[i] = xi: mist_fog_sample(fog, xi).  A mixture as
- * mist_phase_sample_n's (mist__mix_n); one lobe (w = 0 or 1): that lobe's
- * batch where it gives the scalar values (HG; Draine by the eq. 6 kernel,
- * else a loop over the scalar function, whose values the prepared batch
- * would not give bit for bit). */
+ * mist_phase_sample_n's (mist__mix_n); one lobe (w = 0 or 1, xi' = xi):
+ * that lobe's batch (HG: mist_hg_sample_n; Draine: mist__fog_dr_n). */
 MIST__F void MIST__FN(mist__impl_fog_sample_n)(MIST__FOG fog, const MIST__T *in, MIST__T *out,
                                                size_t n)
 {
     size_t i;
     MIST__T w = MIST__FN(mist__clamp)(fog.w_d, MIST__C(0), MIST__C(1));
-#if !defined(__CUDA_ARCH__)
-    if (MIST__FN(mist__mix_w)(w)) {
+    if (w <= MIST__C(0)) {
+        MIST__FN(mist__impl_hg_sample_n)(fog.g_hg, in, out, n);
+        return;
+    }
+#if !defined(__CUDA_ARCH__) && (defined(MIST__W_EXACT) || defined(MIST__DDV))
+    if (w >= MIST__C(1)) {                  /* (the kernel clamps xi as the scalar) */
+        MIST__FN(mist__fog_dr_n)(&fog, in, out, n);
+        return;
+    }
+    if (MIST__FN(mist__mix_w)(w)) {         /* (as in mist_phase_sample_n) */
         MIST__FN(mist__mix_n)(MIST__NULL, &fog, in, out, n);
         return;
     }
