@@ -226,8 +226,57 @@ static double b_phase_dr250_samplef(void) LOOP(float, mist_phase_samplef(&ph_dr2
 static double b_phase_cs_samplef(void) LOOP(float, mist_phase_samplef(&ph_csf, xf[i]))
 static double b_phase_fog_evalf(void)  LOOP(float, mist_phase_evalf(&ph_fogf, uf[i]))
 static double b_phase_fog_samplef(void) LOOP(float, mist_phase_samplef(&ph_fogf, xf[i]))
+/* the fog mixture (d = 10 um: g_hg .988, g_d .556, alpha 22, w_d .482) one
+ * at a time and as batches: prepared and unprepared, float and double */
+static mist_phase ph_fog;
+static const mist_fogf fog10f = { 0.988f, 0.556f, 22.0f, 0.482f };
+static const mist_fog fog10 = { 0.988, 0.556, 22.0, 0.482 };
+static double b_phase_fog_sample(void) LOOP(double, mist_phase_sample(&ph_fog, xd[i]))
+static double b_phase_fog_eval(void)   LOOP(double, mist_phase_eval(&ph_fog, ud[i]))
+static double b_fog_sample10(void)     LOOP(double, mist_fog_sample(fog10, xd[i]))
+static double b_fog_eval10(void)       LOOP(double, mist_fog_eval(fog10, ud[i]))
+static double b_fog_samplef10(void)    LOOP(float, mist_fog_samplef(fog10f, xf[i]))
+static double b_fog_evalf10(void)      LOOP(float, mist_fog_evalf(fog10f, uf[i]))
 
 static void prepared_rows(void);
+/* the compact prepared form (mist_phasec_*) of the same media */
+static mist_phasecf pc_fogf, pc_drf;
+static mist_phasec pc_fog, pc_dr;
+static double k_fog_samplef(void)  LOOP(float, mist_phasec_samplef(&pc_fogf, xf[i]))
+static double k_fog_evalf(void)    LOOP(float, mist_phasec_evalf(&pc_fogf, uf[i]))
+static double k_dr_samplef(void)   LOOP(float, mist_phasec_samplef(&pc_drf, xf[i]))
+static double k_fog_sample(void)   LOOP(double, mist_phasec_sample(&pc_fog, xd[i]))
+static double k_dr_sample(void)    LOOP(double, mist_phasec_sample(&pc_dr, xd[i]))
+static double k_fog_sample_dirf(void)
+{
+    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
+    float pdf, s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        wo = mist_phasec_sample_dirf(&pc_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
+        s += wo.x + pdf;
+    }
+    return s;
+}
+static double k_phase_fog_sample_dirf(void)
+{
+    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
+    float pdf, s = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        wo = mist_phase_sample_dirf(&ph_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
+        s += wo.x + pdf;
+    }
+    return s;
+}
+/* preparing: a new medium per call (the d = 5 .. 50 um fits' parameters) */
+static double k_prep_fogf(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_phasecf p = mist_phasec_fogf(mist_fog_makef(0.98f, 0.5f + 0.1f * xf[i], 22.f, 0.48f));
+    s_ += p.f0[0]; } return s_; }
+static double k_prep_fog(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
+    mist_phasec p = mist_phasec_fog(mist_fog_make(0.98, 0.5 + 0.1 * xd[i], 22., 0.48));
+    s_ += p.f0[0]; } return s_; }
+
 static double b_hg_sample_dirf(void)
 {
     mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
@@ -526,6 +575,16 @@ static double n_phase_dr_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_drf
 static double n_phase_dr_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_drf, uf, out_float, N))
 static double n_phase_dr_sample(void) NCALL(double, mist_phase_sample_n(&ph_dr, xd, out_double, N))
 static double v_eq6f(void) VLOOP(float, draine_eq6f(0.5f, 17.f, xf[i]))
+static double n_phase_fog_samplef(void) NCALL(float, mist_phase_sample_nf(&ph_fogf, xf, out_float, N))
+static double n_phase_fog_sample(void) NCALL(double, mist_phase_sample_n(&ph_fog, xd, out_double, N))
+static double n_phase_fog_evalf(void) NCALL(float, mist_phase_eval_nf(&ph_fogf, uf, out_float, N))
+static double n_phase_fog_eval(void) NCALL(double, mist_phase_eval_n(&ph_fog, ud, out_double, N))
+static double n_fog_samplef(void) NCALL(float, mist_fog_sample_nf(fog10f, xf, out_float, N))
+static double n_fog_sample(void)  NCALL(double, mist_fog_sample_n(fog10, xd, out_double, N))
+static double n_fog_evalf(void)   NCALL(float, mist_fog_eval_nf(fog10f, uf, out_float, N))
+static double n_fog_eval(void)    NCALL(double, mist_fog_eval_n(fog10, ud, out_double, N))
+static double n_phase_fog_samplef_64(void)
+    NCHUNK(float, 64, mist_phase_sample_nf(&ph_fogf, xf + c, out_float + c, 64))
 static double n_rayleigh_evalf(void) NCALL(float, mist_rayleigh_eval_nf(uf, out_float, N))
 static double n_rayleigh_eval(void)  NCALL(double, mist_rayleigh_eval_n(ud, out_double, N))
 static double n_rayleigh_samplef(void) NCALL(float, mist_rayleigh_sample_nf(xf, out_float, N))
@@ -633,6 +692,16 @@ static void batch_rows(void)
 #else
     row_speedup("mist_phase_sample_n  (Draine, loop)", n_phase_dr_sample, b_phase_draine_sample);
 #endif
+    row_speedup("mist_phase_sample_nf (fog 10 um)", n_phase_fog_samplef, b_phase_fog_samplef);
+    row_speedup("mist_phase_sample_nf (fog, n = 64 each)", n_phase_fog_samplef_64,
+                b_phase_fog_samplef);
+    row_speedup("mist_phase_sample_n  (fog 10 um)", n_phase_fog_sample, b_phase_fog_sample);
+    row_speedup("mist_fog_sample_nf (10 um)", n_fog_samplef, b_fog_samplef10);
+    row_speedup("mist_fog_sample_n  (10 um)", n_fog_sample, b_fog_sample10);
+    row_speedup("mist_phase_eval_nf (fog 10 um)", n_phase_fog_evalf, b_phase_fog_evalf);
+    row_speedup("mist_phase_eval_n  (fog 10 um)", n_phase_fog_eval, b_phase_fog_eval);
+    row_speedup("mist_fog_eval_nf (10 um)", n_fog_evalf, b_fog_evalf10);
+    row_speedup("mist_fog_eval_n  (10 um)", n_fog_eval, b_fog_eval10);
     row_speedup("mist_rayleigh_eval_nf", n_rayleigh_evalf, b_rayleigh_evalf);
     row_speedup("mist_rayleigh_eval_n", n_rayleigh_eval, b_rayleigh_eval);
     row_speedup("mist_rayleigh_sample_nf", n_rayleigh_samplef, b_rayleigh_samplef);
@@ -990,6 +1059,39 @@ static double c_fog_makef(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
 static double c_fog_make(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
     mist_fog f = mist_fog_make(ud[i], 0.5, 17. * xd[i], xd[N - 1 - i]); s_ += f.alpha; } return s_; }
 
+static void compact_rows(void)
+{
+    pc_fogf = mist_phasec_fogf(fog10f);
+    pc_fog = mist_phasec_fog(fog10);
+    pc_drf = mist_phasec_drainef(0.5f, 17.f);
+    pc_dr = mist_phasec_draine(0.5, 17.);
+    printf("\nCompact prepared (mist_phasec_*: %zu bytes float, %zu double) against the full "
+           "prepared form\n(mist_phase_*: %zu bytes float, %zu double) and the unprepared "
+           "functions, same media, same run:\n", sizeof(mist_phasecf), sizeof(mist_phasec),
+           sizeof(mist_phasef), sizeof(mist_phase));
+    row("mist_phasec_samplef (fog 10 um)", k_fog_samplef, "mist_phase_samplef", b_phase_fog_samplef);
+    row("mist_phasec_samplef (fog 10 um)", k_fog_samplef, "mist_fog_samplef", b_fog_samplef_rt);
+    row("mist_phasec_samplef (Draine .5, 17)", k_dr_samplef, "mist_phase_samplef",
+        b_phase_draine_samplef);
+    row("mist_phasec_samplef (Draine .5, 17)", k_dr_samplef, "mist_draine_samplef",
+        b_draine_samplef_rt);
+    row("mist_phasec_sample (fog 10 um)", k_fog_sample, "mist_phase_sample", b_phase_fog_sample);
+    row("mist_phasec_sample (fog 10 um)", k_fog_sample, "mist_fog_sample", b_fog_sample10);
+    row("mist_phasec_sample (Draine .5, 17)", k_dr_sample, "mist_phase_sample",
+        b_phase_draine_sample);
+    row("mist_phasec_sample (Draine .5, 17)", k_dr_sample, "mist_draine_sample",
+        b_draine_sample_rt);
+    row("mist_phasec_evalf (fog 10 um)", k_fog_evalf, "mist_phase_evalf", b_phase_fog_evalf);
+    row("mist_phasec_sample_dirf (fog 10 um)", k_fog_sample_dirf, "mist_phase_sample_dirf",
+        k_phase_fog_sample_dirf);
+    {
+        double lo, hi, cf = measure(k_prep_fogf, &lo, &hi), cd = measure(k_prep_fog, &lo, &hi);
+        printf("preparing a fog: mist_phasec_fogf %.3f us, mist_phasec_fog %.3f us; "
+               "mist_phase_fogf %.1f us, mist_phase_fog %.1f us (medians of %d)\n",
+               cf / 1e3, cd / 1e3, prep_us(2), prep_us(3), REPS);
+    }
+}
+
 static void coverage_rows(void)
 {
     bench_fn base;
@@ -1337,11 +1439,20 @@ int main(int argc, char **argv)
     ph_drf = mist_phase_drainef(0.5f, 17.f);
     ph_dr  = mist_phase_draine(0.5, 17.);
     ph_fogf = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
+    ph_fog = mist_phase_fog(fog10);
     machine();
     printf("ns per call: median of %d repetitions of %d calls [min..max]; "
            "ratio to the baseline named\n\n", REPS, N);
     if (argc > 1 && strcmp(argv[1], "tab") == 0) {   /* ./mist_bench tab: the tables alone */
         tab_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "batch") == 0) {  /* ./mist_bench batch: the batch forms */
+        batch_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "compact") == 0) {   /* ./mist_bench compact */
+        compact_rows();
         return 0;
     }
 
@@ -1383,6 +1494,7 @@ int main(int argc, char **argv)
     row("mist_fog_samplef (d = 10 um)", b_fog_samplef, NULL, NULL);
     renderer_rows();
     prepared_rows();
+    compact_rows();
     alternatives();
     hg_target_rows();
     batch_rows();

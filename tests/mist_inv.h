@@ -175,6 +175,7 @@ enum { MI_G, MI_ALPHA, MI_U, MI_XI, MI_WD, MI_DIAM, MI_COMP, MI_POS, MI_REAL, MI
 #define MI_RGB      mist_rgb
 #define MI_HFOG     mist_hfog
 #define MI_PHASET   mist_phase
+#define MI_PHASECT  mist_phasec
 #define MI_EPS      DBL_EPSILON
 #define MI_MAX      DBL_MAX
 #define MI_MIN      DBL_MIN
@@ -196,6 +197,7 @@ enum { MI_G, MI_ALPHA, MI_U, MI_XI, MI_WD, MI_DIAM, MI_COMP, MI_POS, MI_REAL, MI
 #undef MI_RGB
 #undef MI_HFOG
 #undef MI_PHASET
+#undef MI_PHASECT
 #undef MI_EPS
 #undef MI_MAX
 #undef MI_MIN
@@ -218,6 +220,7 @@ enum { MI_G, MI_ALPHA, MI_U, MI_XI, MI_WD, MI_DIAM, MI_COMP, MI_POS, MI_REAL, MI
 #define MI_RGB      mist_rgbf
 #define MI_HFOG     mist_hfogf
 #define MI_PHASET   mist_phasef
+#define MI_PHASECT  mist_phasecf
 #define MI_EPS      FLT_EPSILON
 #define MI_MAX      FLT_MAX
 #define MI_MIN      FLT_MIN
@@ -239,6 +242,7 @@ enum { MI_G, MI_ALPHA, MI_U, MI_XI, MI_WD, MI_DIAM, MI_COMP, MI_POS, MI_REAL, MI
 #undef MI_RGB
 #undef MI_HFOG
 #undef MI_PHASET
+#undef MI_PHASECT
 #undef MI_EPS
 #undef MI_MAX
 #undef MI_MIN
@@ -1194,6 +1198,53 @@ MI_INLINE void MI_F(mi_phase)(int kind, MI_T g, MI_T a, MI_FOGT raw, const MI_T 
                          && fabsl((mi_w)bi[i] - s) <= 2 * tols[i];
             if (!near_s && (!MI_BATCH_SAME(bs[i], s) || !MI_BATCH_SAME(bi[i], s)))
                 MI_PFAIL("mist_phase_sample_n: not the scalar result", xi[i], bs[i], s);
+        }
+        /* the unprepared fog's batch forms: its scalar functions, element
+         * by element, and in place (as the prepared ones above) */
+        if (kind == 4) {
+            MI_CALL(MI_L(mist_fog_eval_n)(raw, u, be, (size_t)m));
+            MI_CALL(MI_L(mist_fog_sample_n)(raw, xi, bs, (size_t)m));
+            for (i = 0; i < m; ++i) bi[i] = xi[i];
+            MI_CALL(MI_L(mist_fog_sample_n)(raw, bi, bi, (size_t)m));
+            for (i = 0; i < m; ++i) {
+                MI_T e = MI_CALL(MI_L(mist_fog_eval)(raw, u[i]));
+                MI_T s = MI_CALL(MI_L(mist_fog_sample)(raw, xi[i]));
+                if (!MI_BATCH_SAME(be[i], e))
+                    MI_PFAIL("mist_fog_eval_n: not the scalar result", u[i], be[i], e);
+                int near_s = MI_CONTRACT && i < n && fabsl((mi_w)bs[i] - s) <= 2 * tols[i]
+                             && fabsl((mi_w)bi[i] - s) <= 2 * tols[i];
+                if (!near_s && (!MI_BATCH_SAME(bs[i], s) || !MI_BATCH_SAME(bi[i], s)))
+                    MI_PFAIL("mist_fog_sample_n: not the scalar result", xi[i], bs[i], s);
+            }
+        }
+    }
+    /* the compact prepared form (Draine, fog; NULL: isotropic): the prepared
+     * density bit for bit, the sample within the prepared sample's tolerance
+     * of the unprepared one (tols), its sample_dir reporting its density */
+    if (kind == 1 || kind == 4 || kind == 5) {
+        MI_PHASECT pc, *q = &pc;
+        if (kind == 1) pc = MI_CALL(MI_L(mist_phasec_draine)(g, a));
+        else if (kind == 4) pc = MI_CALL(MI_L(mist_phasec_fog)(raw));
+        else q = (MI_PHASECT *)0;
+        for (i = 0; i < n; ++i) {
+            MI_T e = MI_CALL(MI_L(mist_phasec_eval)(q, u[i]));
+            MI_T re = MI_CALL(MI_L(mist_phase_eval)(p, u[i]));
+            MI_T s = MI_CALL(MI_L(mist_phasec_sample)(q, xi[i])), rs, pdf = -1, d;
+            MI_V3 o, on;
+            if (!MI_F(mi_same)(e, re))
+                MI_PFAIL("mist_phasec_eval: not mist_phase_eval", u[i], e, re);
+            switch (kind) {
+            case 1: rs = MI_F(mi_draine_sample)(g, a, xi[i]); break;
+            case 4: rs = MI_F(mi_fog_sample)(raw, xi[i]); break;
+            default: rs = MI_F(mi_hg_sample)(0, xi[i]); break;
+            }
+            if (MI_ISNAN(s) || !(s >= -1 && s <= 1)
+                || (i < 80 && !(fabsl((mi_w)s - rs) <= tols[i])))
+                MI_PFAIL("mist_phasec_sample: not the unprepared sample", xi[i], s, rs);
+            o = MI_CALL(MI_L(mist_phasec_sample_dir)(q, wi, xi[i], xi2, &pdf));
+            on = MI_CALL(MI_L(mist_phasec_sample_dir)(q, wi, xi[i], xi2, (MI_T *)0));
+            d = MI_CALL(MI_L(mist_phasec_eval)(q, s));
+            MI_F(mi_check_sdir)("mist_phasec_sample_dir", wi, xi2, s, d, o, pdf, on);
         }
     }
 #undef MI_PFAIL

@@ -28,7 +28,9 @@
 enum { KIND_HG, KIND_DRAINE, KIND_CS, KIND_RAYLEIGH };
 static const char *kind_name[] = { "hg", "draine", "cs", "rayleigh" };
 
-/* 1: sample through the prepared phase functions (mist_phase_*) instead */
+/* 1: sample through the prepared phase functions (mist_phase_*) instead;
+ * 2: Draine and Cornette-Shanks through the compact ones (mist_phasec_*:
+ * mist_phasec_draine, at alpha 1 for CS), HG and Rayleigh as with 1 */
 static int use_prep = 0;
 
 /* sample_d, sample_f: one definition for both types (T, its suffix S);
@@ -39,6 +41,16 @@ static int use_prep = 0;
 #define DEFINE_SAMPLE(T, S, NAME)                                                  \
 static T NAME(int kind, T g, T a, T xi)                                           \
 {                                                                                  \
+    if (use_prep == 2 && (kind == KIND_DRAINE || kind == KIND_CS)) {               \
+        static CAT(mist_phasec, S) c;                                              \
+        static int ck = -1;                                                        \
+        static T cg, ca;                                                           \
+        if (ck != kind || !(cg == g) || !(ca == a)) {                              \
+            c = CAT(mist_phasec_draine, S)(g, kind == KIND_CS ? (T)1 : a);         \
+            ck = kind; cg = g; ca = a;                                             \
+        }                                                                          \
+        return CAT(mist_phasec_sample, S)(&c, xi);                                 \
+    }                                                                              \
     if (use_prep) {                                                                \
         static CAT(mist_phase, S) p;                                               \
         static int pk = -1;                                                        \
@@ -539,6 +551,7 @@ static void test_top_alpha(void)
         for (ig = 0; ig < (int)(sizeof gs / sizeof *gs); ++ig) {
             double g = gs[ig];
             mist_phase p = mist_phase_draine(g, a);
+            mist_phasec c = mist_phasec_draine(g, a);
             for (k = 0; k < 24; ++k)
                 xs[k] = k < 12 ? 0.4 + 0.2 * mt_uniform(&rng) : mt_uniform(&rng);
             mist_phase_sample_n(&p, xs, us, 24);
@@ -547,11 +560,15 @@ static void test_top_alpha(void)
                 qreal q = ref_sample_stop(g, qa, xs[k], u, ref_bar_rstop(xs[k]));
                 double r = ref_bar_root(g, qa, xs[k], u, 0, q, &ur);
                 double rb = ref_bar_root(g, qa, xs[k], us[k], 0, q, &ur);
+                double uc = mist_phasec_sample(&c, xs[k]);
+                double rc = ref_bar_root(g, qa, xs[k], uc, 0, q, &ur);
                 ++n_points;
                 if (r > worst_d) worst_d = r;
-                mt_check(r <= 1 && rb <= 1, "prepared draine double g=%.17g alpha=%.17g "
-                         "xi=%.17g: u=%.17g, batch %.17g, u*=%.17g (%.2f, %.2f x the bound)",
-                         g, a, xs[k], u, us[k], ur, r, rb);
+                if (rc > worst_d) worst_d = rc;
+                mt_check(r <= 1 && rb <= 1 && rc <= 1, "prepared draine double g=%.17g "
+                         "alpha=%.17g xi=%.17g: u=%.17g, batch %.17g, compact %.17g, "
+                         "u*=%.17g (%.2f, %.2f, %.2f x the bound)",
+                         g, a, xs[k], u, us[k], uc, ur, r, rb, rc);
             }
         }
     }
@@ -845,8 +862,10 @@ static void test_fog(void)
          * alone) */
         mist_fog f0 = mist_fog_make(gh, 0.5, 1, w);
         mist_phase p0 = mist_phase_fog(f0);
+        mist_phasec c0 = mist_phasec_fog(f0);
         fog_check(gh, 0.5, 1, w, xi, 0, mist_fog_sample(f0, xi));
         fog_check(gh, 0.5, 1, w, xi, 0, mist_phase_sample(&p0, xi));
+        fog_check(gh, 0.5, 1, w, xi, 0, mist_phasec_sample(&c0, xi));
     }
     for (k = 0; k < n; ++k) {
         double gd = fog_g(&rng), a = (k % 4 == 0) ? 0 : pow(10, -3 + 9 * mt_uniform(&rng));
@@ -856,6 +875,8 @@ static void test_fog(void)
         mist_fogf ff;
         mist_phase ph;
         mist_phasef phf;
+        mist_phasec pc;
+        mist_phasecf pcf;
         gh = fog_g(&rng);
         w = (k % 3 == 0) ? 0.5 * mt_uniform(&rng) : mt_uniform(&rng);
         f = mist_fog_make(gh, gd, a, w);
@@ -863,6 +884,8 @@ static void test_fog(void)
         gf = (float)gh; gdf = (float)gd; af = (float)a; wf = (float)w;
         ff = mist_fog_makef(gf, gdf, af, (float)wf);
         phf = mist_phase_fogf(ff);
+        pc = mist_phasec_fog(f);
+        pcf = mist_phasec_fogf(ff);
         x[0] = mt_uniform(&rng);
         x[1] = 1 - ldexp(1, -53 + (int)(mt_next(&rng) % 3));     /* 1 - 1..4 ulps */
         x[2] = w * (1 - ldexp(1, -53 + (int)(mt_next(&rng) % 3)));   /* just below w */
@@ -877,6 +900,8 @@ static void test_fog(void)
             xf = (float)x[j];
             fog_check(gf, gdf, af, wf, xf, 1, mist_fog_samplef(ff, xf));
             fog_check(gf, gdf, af, wf, xf, 1, mist_phase_samplef(&phf, xf));
+            fog_check(gh, gd, a, w, x[j], 0, mist_phasec_sample(&pc, x[j]));
+            fog_check(gf, gdf, af, wf, xf, 1, mist_phasec_samplef(&pcf, xf));
         }
     }
     printf("test_accuracy: fog mixture: %ld samples; worst |u - u*| / bound: double %.3f, "
@@ -1018,6 +1043,15 @@ int main(void)
     test_huge_alpha();
     test_near_one();
     test_top_alpha();
+    test_crawl_points();
+    test_random_params((int)mt_scale(1000, 100));
+    test_monotone();
+    /* the compact prepared Draine and CS (mist_phasec_*): the same bar */
+    use_prep = 2;
+    for (kind = KIND_DRAINE; kind <= KIND_CS; ++kind)
+        test_grid(kind, (int)(kind == KIND_DRAINE ? mt_scale(40, 10) : mt_scale(100, 20)));
+    test_huge_alpha();
+    test_near_one();
     test_crawl_points();
     test_random_params((int)mt_scale(1000, 100));
     test_monotone();

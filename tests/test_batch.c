@@ -6,8 +6,17 @@
  * against mist_phase_eval and mist_phase_sample; and mist_phase_eval_n of
  * a fog with two lobes, HG 0.9 and Draine (g, alpha), w_d 0.4, which a
  * mutation audit found untested: a batch that dropped its HG lobe passed
- * every test but the stress run) and their float forms
- * (_nf).
+ * every test but the stress run), the fog mixture's samplers
+ * mist_phase_sample_n of that fog and mist_fog_sample_n, mist_fog_eval_n,
+ * and their float forms (_nf).  The mixture also at its edges (mix_T):
+ * seventeen fogs (w_d tiny, near 1, 0, 1, NaN; a lobe at the Dirac
+ * limit's edge; alpha 0; NaN parameters), xi = w_d and its neighbours
+ * (the lobe's pick), each lobe's mirror edge xi' = 1 - 1024 eps and
+ * around it, xi near 0 and 1, over lengths across its chunks of 1024
+ * (MIST__MIXC) and the Draine blocks of 32; every path (HG, Draine,
+ * mirror) reached, counted.  There too the compact form of each fog
+ * (mist_phasec_eval: mist_phase_eval's values bit for bit, bad input too;
+ * mist_phasec_sample of bad xi that of the clamped xi).
  *
  * Inputs: random values over and beyond the domain, and the edges and bad
  * input of DOMAIN AND BAD INPUT (NaN, +-inf, +-0, +-1 and their neighbours,
@@ -23,7 +32,7 @@
  * 32: mist_draine_sample_n (MIST_DRAINE_PREPARE_N, mist__draine_vn) and
  * mist_phase_sample_n (the float form's queue of pending elements, flushed
  * when 32 are pending: 466 mid-loop flushes at n > 100, none at n <= 100,
- * counted); for the others 100 already spans three blocks of 32 and a
+ * counted) and the fog mixture's samplers (chunks of 1024); for the others 100 already spans three blocks of 32 and a
  * remainder (under ASan at -O0 the long lengths would take most of
  * batch_nold's time).
  * Built twice by CMake: with the project's
@@ -89,11 +98,16 @@ static const int n_list[] = { 0, 1, 15, 16, 17, 31, 32, 33, 100, MIST_DRAINE_PRE
                               MIST_DRAINE_PREPARE_N, NMAX };
 
 enum { HG_EVAL, HG_SAMPLE, DR_EVAL, DR_SAMPLE, RL_EVAL, RL_SAMPLE, PD_EVAL, PD_SAMPLE,
-       PH_SAMPLE, PF_EVAL, NKIND };
+       PH_SAMPLE, PF_EVAL, PF_SAMPLE, FG_EVAL, FG_SAMPLE, NKIND };
 static const char *kind_name[] = { "hg_eval", "hg_sample", "draine_eval", "draine_sample",
                                    "rayleigh_eval", "rayleigh_sample", "phase_eval (Draine)",
                                    "phase_sample (Draine)", "phase_sample (HG)",
-                                   "phase_eval (fog: two lobes)" };
+                                   "phase_eval (fog: two lobes)",
+                                   "phase_sample (fog mixture)", "fog_eval", "fog_sample" };
+/* the fog of the kinds PF_*, FG_*: HG 0.9 and Draine (g, alpha), w_d 0.4 */
+#define FOG_GH 0.9
+#define FOG_W 0.4
+#define MIXK(k) ((k) == PF_SAMPLE || (k) == FG_SAMPLE)
 
 /* One definition for both types: T, its suffix S (empty or f). */
 #define CAT_(a, b) a##b
@@ -126,9 +140,10 @@ static double bar_##T(T g, T al, T x, T b)                                      
 /* within twice their bar (DR_BAR) of each other                            */    \
 static int close_##T(int k, T g, T al, T x, T a, T b)                            \
 {                                                                                \
-    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL; \
+    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL \
+             || k == FG_EVAL;                                                    \
     if (within_##T(a, b, ev ? EVAL_ULPS : FMA_ULPS)) return 1;                   \
-    if (!DR_BAR || !(k == DR_SAMPLE || k == PD_SAMPLE) || x != x) return 0;       \
+    if (!DR_BAR || !(k == DR_SAMPLE || k == PD_SAMPLE || MIXK(k)) || x != x) return 0; \
     return fabs((double)a - (double)b) <= 2 * bar_##T(g, al, x, b);              \
 }                                                                                 \
                                                                                   \
@@ -141,7 +156,8 @@ static const CAT(mist_phase, S) *prep_##T(int k, T g, T a)                      
     static int pk = -1;                                                           \
     if (pk != k || !bits_##T(pg, g) || !bits_##T(pa, a)) {                         \
         p = k == PH_SAMPLE ? CAT(mist_phase_hg, S)(g)                            \
-          : k == PF_EVAL ? CAT(mist_phase_fog, S)(CAT(mist_fog_make, S)((T)0.9, g, a, (T)0.4)) \
+          : k == PF_EVAL || k == PF_SAMPLE                                        \
+            ? CAT(mist_phase_fog, S)(CAT(mist_fog_make, S)((T)FOG_GH, g, a, (T)FOG_W)) \
           : CAT(mist_phase_draine, S)(g, a);                                      \
         pk = k; pg = g; pa = a;                                                   \
     }                                                                             \
@@ -159,8 +175,12 @@ static T scalar_##T(int k, T g, T a, T x, int n)                                
     switch (k) {                                                                  \
     case PD_EVAL: case PF_EVAL:                                                   \
                     return CAT(mist_phase_eval, S)(prep_##T(k, g, a), x);         \
-    case PD_SAMPLE: case PH_SAMPLE:                                               \
+    case PD_SAMPLE: case PH_SAMPLE: case PF_SAMPLE:                               \
                     return CAT(mist_phase_sample, S)(prep_##T(k, g, a), x);       \
+    case FG_EVAL:   return CAT(mist_fog_eval, S)(CAT(mist_fog_make, S)((T)FOG_GH, g, a, \
+                                                                    (T)FOG_W), x); \
+    case FG_SAMPLE: return CAT(mist_fog_sample, S)(CAT(mist_fog_make, S)((T)FOG_GH, g, a, \
+                                                                      (T)FOG_W), x); \
     case HG_EVAL:   return CAT(mist_hg_eval, S)(g, x);                            \
     case HG_SAMPLE: return CAT(mist_hg_sample, S)(g, x);                          \
     case DR_EVAL:   return CAT(mist_draine_eval, S)(g, a, x);                     \
@@ -175,8 +195,15 @@ static void batch_##T(int k, T g, T a, const T *in, T *out, size_t n)           
     switch (k) {                                                                  \
     case PD_EVAL: case PF_EVAL:                                                   \
                     CAT(mist_phase_eval_n, S)(prep_##T(k, g, a), in, out, n); break; \
-    case PD_SAMPLE: case PH_SAMPLE:                                               \
+    case PD_SAMPLE: case PH_SAMPLE: case PF_SAMPLE:                               \
         CAT(mist_phase_sample_n, S)(prep_##T(k, g, a), in, out, n); break;        \
+    case FG_EVAL:                                                                 \
+        CAT(mist_fog_eval_n, S)(CAT(mist_fog_make, S)((T)FOG_GH, g, a, (T)FOG_W), in, out, n); \
+        break;                                                                    \
+    case FG_SAMPLE:                                                               \
+        CAT(mist_fog_sample_n, S)(CAT(mist_fog_make, S)((T)FOG_GH, g, a, (T)FOG_W), in, out, \
+                                  n);                                             \
+        break;                                                                    \
     case HG_EVAL:   CAT(mist_hg_eval_n, S)(g, in, out, n); break;                  \
     case HG_SAMPLE: CAT(mist_hg_sample_n, S)(g, in, out, n); break;                \
     case DR_EVAL:   CAT(mist_draine_eval_n, S)(g, a, in, out, n); break;           \
@@ -192,9 +219,11 @@ static void inputs_##T(int k, T g, mt_rng *r, T *x, int n)                      
     const T sp[] = { (T)NAN, (T)INFINITY, -(T)INFINITY, (T)0, -(T)0, (T)1, (T)-1,  \
                      NEXT((T)1, (T)2), NEXT((T)1, (T)0), NEXT((T)-1, (T)-2),        \
                      NEXT((T)-1, (T)0), (T)0.5, (T)-0.5, (T)1e-30, (T)-1e-30, g,   \
-                     (T)1.5, (T)-0.25 };                                           \
+                     (T)1.5, (T)-0.25, (T)FOG_W, NEXT((T)FOG_W, (T)0),                \
+                     NEXT((T)FOG_W, (T)1) };                                       \
     int i, ns = (int)(sizeof sp / sizeof sp[0]);                                  \
-    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL; \
+    int ev = k == HG_EVAL || k == DR_EVAL || k == RL_EVAL || k == PD_EVAL || k == PF_EVAL \
+             || k == FG_EVAL;                                                    \
     for (i = 0; i < n; ++i) {                                                     \
         double v = mt_uniform(r);                                                 \
         if (i % 7 == 3) x[i] = sp[(i / 7) % ns];                                  \
@@ -208,7 +237,7 @@ static void check_##T(int k, T g, T a, mt_rng *r)                               
     size_t ni;                                                                    \
     for (ni = 0; ni < sizeof n_list / sizeof n_list[0]; ++ni) {                   \
         int n = n_list[ni], i, bad = -1;                                          \
-        if (n > 100 && k != DR_SAMPLE && k != PD_SAMPLE && mt_quick() > 1)         \
+        if (n > 100 && k != DR_SAMPLE && k != PD_SAMPLE && !MIXK(k) && mt_quick() > 1) \
             continue;                                                /* QUICK */  \
         inputs_##T(k, g, r, in, n);                                               \
         for (i = 0; i < n; ++i) ref[i] = scalar_##T(k, g, a, in[i], n);             \
@@ -251,6 +280,97 @@ static int nodes_##T(T g, T a, int bad)                                         
         if (!bits_##T(u, p.tab[j])) return 0;                                     \
     }                                                                             \
     return 1;                                                                     \
+}                                                                                 \
+                                                                                  \
+/* The fog mixture at its lobes' edges, sampled (prepared: mist_phase_   */ \
+/* sample_n; unprepared: mist_fog_sample_n) and evaluated (mist_phase_    */ \
+/* eval_n, mist_fog_eval_n) against the scalar functions: xi = w and a few */ \
+/* ulps either side (the lobe's pick, xi < w), w (1 - j eps), 0, -0, the   */ \
+/* smallest values, 1 and below, each lobe's mirror edge (xi' = 1 - 1024   */ \
+/* eps, where the scalar sampler takes the mirror image) and around it,    */ \
+/* bad input, then random xi; lengths across the chunks of 1024.  cnt[]    */ \
+/* counts the elements by their path (HG, Draine, mirror) as              */ \
+/* mist__fog_pick sends them, so that the caller can require all three.   */ \
+static int mix_##T(T gh, T gd, T a, T w, mt_rng *r, long cnt[3])                 \
+{                                                                                 \
+    static const int lens[] = { NMAX, 3, 33, 257, 1023, 1024, 1025 };             \
+    static T in[NMAX], out[NMAX], ref[NMAX], x0[NMAX];                            \
+    CAT(mist_fog, S) f = CAT(mist_fog_make, S)(gh, gd, a, w);                     \
+    CAT(mist_phase, S) p = CAT(mist_phase_fog, S)(f);                             \
+    T ws = f.w_d, e = (NEXT((T)1, (T)2) - 1) / 2, t, x, sg;                        \
+    int i, j, n = 0, bad = 0, l, k;                                               \
+    const T sp[] = { 0, -(T)0, (T)1e-45, (T)1e-300, 1, NEXT((T)1, (T)2), (T)NAN,  \
+                     (T)INFINITY, -(T)INFINITY, -1, 2, (T)0.5 };                    \
+    for (i = 0; i < (int)(sizeof sp / sizeof sp[0]); ++i) in[n++] = sp[i];        \
+    for (t = ws, j = 0; j < 8; ++j, t = NEXT(t, (T)2)) in[n++] = t;              \
+    for (t = ws, j = 0; j < 8; ++j) in[n++] = t = NEXT(t, (T)0);                 \
+    for (j = 1; j < 8; ++j) in[n++] = ws * (1 - (T)j * e);                        \
+    for (t = 1, j = 0; j < 8; ++j) in[n++] = t = NEXT(t, (T)0);                  \
+    for (j = 1; j < 40; j += 3) { in[n++] = (T)ldexp(1, -j); in[n++] = ws * (T)ldexp(1, -j); } \
+    for (l = 0; l < 2; ++l) {               /* the mirror edges, either side */  \
+        T c = l ? ws + (1 - ws) * (1 - 1024 * e) : ws * (1 - 1024 * e);           \
+        for (t = c, j = 0; j < 6; ++j) in[n++] = t = NEXT(t, (T)0);              \
+        for (t = c, j = 0; j < 6; ++j, t = NEXT(t, (T)2)) in[n++] = t;           \
+        for (j = 1; j < 5; ++j) in[n++] = c + (T)(j * 300) * e * (l ? 1 - ws : ws); \
+        for (j = 1; j < 5; ++j) in[n++] = c - (T)(j * 300) * e * (l ? 1 - ws : ws); \
+    }                                                                             \
+    for (; n < NMAX; ++n) in[n] = n % 5 ? (T)mt_uniform(r) : (T)(1.2 * mt_uniform(r) - 0.1); \
+    for (i = 0; i < NMAX; ++i) {                                                  \
+        T xi = in[i] == in[i] ? (in[i] < 0 ? 0 : in[i] > 1 ? 1 : in[i]) : 0;     \
+        int dr = CAT(mist__fog_pick, S)(xi, ws, &x, &sg);                         \
+        if (ws > 0 && ws < 1) ++cnt[sg < 0 ? 2 : dr];                             \
+    }                                                                             \
+    for (k = 0; k < 4; ++k)                                                       \
+        for (l = 0; l < (int)(sizeof lens / sizeof lens[0]); ++l) {               \
+            int m = lens[l], kind = k == 0 ? PF_SAMPLE : k == 1 ? FG_SAMPLE : PF_EVAL; \
+            for (i = 0; i < m; ++i) {                                             \
+                x0[i] = k < 2 ? in[i] : 2 * in[i] - 1;       /* eval: u */         \
+                ref[i] = k == 0 ? CAT(mist_phase_sample, S)(&p, x0[i])            \
+                       : k == 1 ? CAT(mist_fog_sample, S)(f, x0[i])               \
+                       : k == 2 ? CAT(mist_phase_eval, S)(&p, x0[i])              \
+                       : CAT(mist_fog_eval, S)(f, x0[i]);                         \
+                out[i] = x0[i];                                                   \
+            }                                                                     \
+            for (j = 0; j < 2; ++j) {              /* j = 1: in place */          \
+                const T *src = j ? out : x0;                                      \
+                if (k == 0) CAT(mist_phase_sample_n, S)(&p, src, out, (size_t)m); \
+                if (k == 1) CAT(mist_fog_sample_n, S)(f, src, out, (size_t)m);    \
+                if (k == 2) CAT(mist_phase_eval_n, S)(&p, src, out, (size_t)m);   \
+                if (k == 3) CAT(mist_fog_eval_n, S)(f, src, out, (size_t)m);      \
+                for (i = 0; i < m; ++i)                                           \
+                    if (!close_##T(kind, gd, a, x0[i], out[i], ref[i])) {         \
+                        if (!bad)                                                 \
+                            printf("mix%s %d g_hg=%a g_d=%a alpha=%a w=%a n=%d%s: xi=%a " \
+                                   "batch %a scalar %a\n", #S, k, (double)gh, (double)gd, \
+                                   (double)a, (double)w, m, j ? " in place" : "",  \
+                                   (double)x0[i], (double)out[i], (double)ref[i]); \
+                        ++bad;                                                    \
+                    }                                                             \
+                for (i = 0; i < m; ++i) out[i] = x0[i];                           \
+            }                                                                     \
+        }                                                                         \
+    /* the compact form of the same fog (mist_phasec_*): its density is    */ \
+    /* mist_phase_eval's bit for bit, bad input too; its samples lie in     */ \
+    /* [-1, 1] and take bad xi as the clamp does (NaN as 0)                 */ \
+    {                                                                             \
+        CAT(mist_phasec, S) c = CAT(mist_phasec_fog, S)(f);                       \
+        for (i = 0; i < NMAX; ++i) {                                              \
+            T u = 2 * in[i] - 1, xi = in[i], xc, us;                              \
+            T e0 = CAT(mist_phase_eval, S)(&p, u), e1 = CAT(mist_phasec_eval, S)(&c, u); \
+            xc = xi == xi ? (xi < 0 ? 0 : xi > 1 ? 1 : xi) : 0;                   \
+            us = CAT(mist_phasec_sample, S)(&c, xi);                              \
+            if (!bits_##T(e0, e1) || !(us >= -1 && us <= 1)                      \
+                || !bits_##T(us, CAT(mist_phasec_sample, S)(&c, xc))) {          \
+                if (!bad)                                                         \
+                    printf("compact%s g_hg=%a g_d=%a alpha=%a w=%a: x=%a eval %a, " \
+                           "prepared %a; sample %a\n", #S, (double)gh, (double)gd, \
+                           (double)a, (double)w, (double)xi, (double)e1, (double)e0, \
+                           (double)us);                                           \
+                ++bad;                                                            \
+            }                                                                     \
+        }                                                                         \
+    }                                                                             \
+    return bad;                                                                   \
 }
 
 DEFINE_TYPE(double, , nextafter)
@@ -277,6 +397,41 @@ int main(void)
                      "prepared table nodes g=%g a=%g: the scalar sampler's (kernel: %d)", g, a,
                      mist__draine_vn(g, a, 129));
         }
+    {   /* the fog mixture at its edges: random fogs, the d = 10 um fog
+         * first, a lobe at the Dirac limit's edge (the mirror's case), tiny
+         * and near-1 w, alpha 0, bad parameters */
+        static const double fogs[][4] = {
+            { 0.988, 0.556, 22, 0.482 }, { 0.9, -0.3, 250, 0.21 }, { -0.5, 0.999, 17, 0.7 },
+            { 0.3, 0.5, 1e4, 1e-6 }, { 0.8, 0.8, 17, 0.4 }, { 0.6, -0.9, 3, 1 - 0x1p-20 },
+            { -0x1.ffffffffffffep-1, 0.5, 1, 0x1.fffe7c730755bp-2 }, { 0.2, 0.7, 0, 0.5 },
+            { 0.5, 0.9999, 1e9, 0.999999 }, { 0.95, 0.6, 1, 0x1p-30 }, { 0.1, 1e-4, 1e30, 0.5 },
+            { NAN, 0.5, 17, 0.3 }, { 0.5, NAN, NAN, 0.6 }, { 0.3, 0.2, 17, 0 },
+            { 0.3, 0.2, 17, 1 }, { 0.3, 0.2, 17, NAN }, { 1, -1, 17, 0.5 } };
+        long cd[3] = { 0, 0, 0 }, cf[3] = { 0, 0, 0 }, c10[3] = { 0, 0, 0 };
+        size_t i;
+        int bd = 0, bf = 0;
+        for (i = 0; i < sizeof fogs / sizeof fogs[0]; ++i) {
+            const double *q = fogs[i];
+            bd += mix_double(q[0], q[1], q[2], q[3], &r, i ? cd : c10);
+            bf += mix_float((float)q[0], (float)q[1], (float)q[2], (float)q[3], &r, cf);
+        }
+        mt_check(bd == 0 && bf == 0, "fog mixture batches at the edges (and the compact "
+                 "form's density, bad xi): %d double, %d float elements not the scalar "
+                 "functions'", bd, bf);
+        mt_check(c10[0] > 0 && c10[1] > 0 && c10[2] > 0 && cd[2] > 0 && cf[2] > 0,
+                 "the edges reach every path: 10 um fog HG %ld, Draine %ld, mirror %ld; "
+                 "mirror: double %ld, float %ld", c10[0], c10[1], c10[2], cd[2], cf[2]);
+        /* control: the inputs at w tell the lobes apart (the sample jumps
+         * between xi = w and its predecessor: a batch that picked the wrong
+         * lobe there would differ) */
+        {
+            mist_phasef p = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22, 0.482f));
+            float w = p.w, a = mist_phase_samplef(&p, w), b = mist_phase_samplef(&p,
+                                                                             nextafterf(w, 0));
+            mt_check(fabsf(a - b) > 0.5f, "control: the lobe's pick at w moves the sample "
+                     "(%g, %g)", (double)a, (double)b);
+        }
+    }
     mt_check(!nodes_double(0.5, 17, 7) && !nodes_float(0.5f, 17, 7),
              "control: a node one ulp off must differ");
     /* a float Draine medium with |g| >= 0.999 samples as the unprepared

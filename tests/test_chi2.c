@@ -10,7 +10,10 @@
  * split over all positive tests of this file by the Sidak correction.
  *
  *   1. scalar samplers u = cos(theta), double and float: HG, Draine,
- *      Cornette-Shanks, Rayleigh and the fog mixture (Jendersie-d'Eon fits);
+ *      Cornette-Shanks, Rayleigh and the fog mixture (Jendersie-d'Eon fits),
+ *      and the compact prepared Draine and fog (mist_phasec_*, judged by
+ *      their own density mist_phasec_eval, which the quadrature also checks
+ *      for its normalisation);
  *   2. direction samplers, double and float: wo binned in (cos theta, phi)
  *      around wi, phi measured in a frame this file builds itself;
  *   3. negative controls: deliberately wrong samplers that must be rejected,
@@ -113,6 +116,10 @@ typedef struct {
     double warp[2];      /* g's of the HG-quantile bin warps */
     int nwarp;
     char label[96];
+    int compact;         /* 1: the compact prepared form (mist_phasec_*): */
+    mist_phasec pc;      /*   its density (double, at the parameters above), */
+    mist_phasec pcs;     /*   the double sampler's (K_BAD_DRAINE: at alpha_bad) */
+    mist_phasecf pcf;    /*   the float sampler's */
 } spec;
 
 /* Density per unit u (= 2 pi times the density per steradian), always the
@@ -122,6 +129,7 @@ static double dens_u(double u, const void *ctx)
 {
     const spec *s = (const spec *)ctx;
     double p;
+    if (s->compact) return TWO_PI * mist_phasec_eval(&s->pc, u);
     switch (s->kind) {
     case K_HG: case K_BAD_HG:         p = mist_hg_eval(s->g, u); break;
     case K_DRAINE: case K_BAD_DRAINE: p = mist_draine_eval(s->g, s->alpha, u); break;
@@ -173,6 +181,7 @@ static double sample_u(const spec *s, mt_rng *r)
 {
     if (s->fl) {
         float xi = mt_uniformf(r), g = (float)s->g;
+        if (s->compact) return mist_phasec_samplef(&s->pcf, xi);
         switch (s->kind) {
         case K_HG:       return mist_hg_samplef(g, xi);
         case K_DRAINE:   return mist_draine_samplef(g, (float)s->alpha, xi);
@@ -182,6 +191,7 @@ static double sample_u(const spec *s, mt_rng *r)
         }
     } else {
         double xi = mt_uniform(r);
+        if (s->compact) return mist_phasec_sample(&s->pcs, xi);
         switch (s->kind) {
         case K_HG:         return mist_hg_sample(s->g, xi);
         case K_DRAINE:     return mist_draine_sample(s->g, s->alpha, xi);
@@ -202,7 +212,8 @@ static void sample_dir(const spec *s, enum frame_bug bug, const double wi[3],
         mist_vec3f v, o;
         float x1 = mt_uniformf(r), x2 = mt_uniformf(r), g = (float)s->g, pf = 0;
         v.x = (float)wi[0]; v.y = (float)wi[1]; v.z = (float)wi[2];
-        switch (s->kind) {
+        if (s->compact) o = mist_phasec_sample_dirf(&s->pcf, v, x1, x2, &pf);
+        else switch (s->kind) {
         case K_HG:       o = mist_hg_sample_dirf(g, v, x1, x2, &pf); break;
         case K_DRAINE:   o = mist_draine_sample_dirf(g, (float)s->alpha, v, x1, x2, &pf); break;
         case K_CS:       o = mist_cs_sample_dirf(g, v, x1, x2, &pf); break;
@@ -217,6 +228,7 @@ static void sample_dir(const spec *s, enum frame_bug bug, const double wi[3],
         *pdf = 1;
         if (bug == FRAME_HALF_PHI)  o = bad_dir_half_phi(s->g, v, x1, x2);
         else if (bug == FRAME_SKEW) o = bad_dir_skew(s->g, v, x1, x2);
+        else if (s->compact) o = mist_phasec_sample_dir(&s->pcs, v, x1, x2, pdf);
         else switch (s->kind) {
         case K_HG:       o = mist_hg_sample_dir(s->g, v, x1, x2, pdf); break;
         case K_DRAINE:   o = mist_draine_sample_dir(s->g, s->alpha, v, x1, x2, pdf); break;
@@ -523,6 +535,23 @@ static spec make_fog(int fl, double d)
     return s;
 }
 
+/* s (Draine, K_BAD_DRAINE or the fog) as the compact prepared form */
+static spec compact(spec s)
+{
+    size_t l = strlen(s.label);
+    s.compact = 1;
+    if (s.kind == K_FOG) {
+        s.pc = s.pcs = mist_phasec_fog(s.fog);
+        s.pcf = mist_phasec_fogf(s.fogf);
+    } else {
+        s.pc = mist_phasec_draine(s.g, s.alpha);
+        s.pcs = s.kind == K_BAD_DRAINE ? mist_phasec_draine(s.g, s.alpha_bad) : s.pc;
+        s.pcf = mist_phasec_drainef((float)s.g, (float)s.alpha);
+    }
+    snprintf(s.label + l, sizeof s.label - l, " (compact)");
+    return s;
+}
+
 static const double G_GRID[] = {0, 1e-4, -1e-4, 0.3, -0.3, 0.9, -0.9, 0.999, -0.999};
 static const double A_GRID[] = {0, 1e-3, 1, 17, 250, 1e4, INFINITY};
 static const double D_GRID[] = {0.02, 0.1, 5, 10, 20, 50};
@@ -551,7 +580,15 @@ static void scalar_tests(void)
         for (i = 0; i < NELEM(D_GRID); ++i) {
             s = make_fog(fl, D_GRID[i]);
             test_scalar(&s, 0);
+            s = compact(s);
+            test_scalar(&s, 0);
         }
+        for (i = 0; i < NELEM(G_GRID); ++i)     /* the compact form: g 0, .3, -.9, */
+            for (j = 2; j < NELEM(A_GRID); j += 2) {   /* +-.999; alpha 1, 250, +inf */
+                if (i != 0 && i != 3 && i < 6) continue;
+                s = compact(make_spec(K_DRAINE, fl, G_GRID[i], A_GRID[j]));
+                test_scalar(&s, 0);
+            }
     }
 }
 
@@ -568,7 +605,7 @@ static void dir_tests(void)
 {
     int fl, i, w;
     for (fl = 0; fl <= 1; ++fl) {
-        spec sp[7];
+        spec sp[9];
         int ns = 0;
         sp[ns++] = make_spec(K_HG, fl, 0.7, 0);
         sp[ns++] = make_spec(K_HG, fl, -0.9, 0);
@@ -576,13 +613,18 @@ static void dir_tests(void)
         sp[ns++] = make_spec(K_CS, fl, -0.4, 1);
         sp[ns++] = make_spec(K_RAYLEIGH, fl, 0, 0);
         sp[ns++] = make_fog(fl, 10);
+        /* the compact forms: at +z and a general wi (the frame is every
+         * sampler's, tested above at all six) */
+        sp[ns++] = compact(make_fog(fl, 10));
+        sp[ns++] = compact(make_spec(K_DRAINE, fl, 0.6, 250));
         /* g = 0.999 in double only: a float sample there is u = 1 exactly
          * with probability ~3%, and its azimuth is then rounding noise, not
          * uniform (no frame can give a direction at theta = 0 an azimuth) */
         if (!fl) sp[ns++] = make_spec(K_HG, fl, 0.999, 0);
         for (i = 0; i < ns; ++i)
             for (w = 0; w < 6; ++w)
-                test_dir(&sp[i], WI[w], WI_NAME[w], FRAME_OK);
+                if (!sp[i].compact || w == 0 || w == 2)
+                    test_dir(&sp[i], WI[w], WI_NAME[w], FRAME_OK);
     }
 }
 
@@ -605,6 +647,13 @@ static void negative_controls(void)
     s = make_spec(K_BAD_DRAINE, 0, 0.3, 25);
     s.alpha_bad = 17;
     snprintf(s.label, sizeof s.label, "draine g=+0.3 alpha=25 sampled with alpha=17");
+    test_scalar(&s, 1);
+    /* (b') the same through the compact form (its density at alpha 25, its
+     * sampler at 17) */
+    s = make_spec(K_BAD_DRAINE, 0, 0.3, 25);
+    s.alpha_bad = 17;
+    s = compact(s);
+    snprintf(s.label, sizeof s.label, "compact draine g=+0.3 alpha=25 sampled with alpha=17");
     test_scalar(&s, 1);
     /* (c) HG g = 0.7 directions with a broken frame */
     s = make_spec(K_HG, 0, 0.7, 0);

@@ -52,6 +52,19 @@ MIST_FUNC double use_all(double x)
             wof = mist_phase_sample_dirf(&phf[k], wif, xf, xf, &pdff); sf += wof.x + pdff;
         }
     }
+    {   /* the compact prepared phase functions */
+        mist_phasec pc[2];
+        mist_phasecf pcf[2];
+        int k;
+        pc[0] = mist_phasec_fog(fog); pc[1] = mist_phasec_draine(0.5, 2.0);
+        pcf[0] = mist_phasec_fogf(fogf); pcf[1] = mist_phasec_drainef(0.5f, 2.0f);
+        for (k = 0; k < 2; ++k) {
+            s += mist_phasec_eval(&pc[k], x) + mist_phasec_sample(&pc[k], x);
+            wo = mist_phasec_sample_dir(&pc[k], wi, x, x, &pdf); s += wo.x + pdf;
+            sf += mist_phasec_evalf(&pcf[k], xf) + mist_phasec_samplef(&pcf[k], xf);
+            wof = mist_phasec_sample_dirf(&pcf[k], wif, xf, xf, &pdff); sf += wof.x + pdff;
+        }
+    }
     {   /* the batch forms, in place */
         double a[3];
         float af[3];
@@ -63,6 +76,8 @@ MIST_FUNC double use_all(double x)
         mist_draine_sample_n(0.5, 2.0, a, a, 3);   mist_draine_sample_nf(0.5f, 2.0f, af, af, 3);
         mist_rayleigh_eval_n(a, a, 3);             mist_rayleigh_eval_nf(af, af, 3);
         mist_rayleigh_sample_n(a, a, 3);           mist_rayleigh_sample_nf(af, af, 3);
+        mist_fog_eval_n(fog, a, a, 3);             mist_fog_eval_nf(fogf, af, af, 3);
+        mist_fog_sample_n(fog, a, a, 3);           mist_fog_sample_nf(fogf, af, af, 3);
         s += a[1];
         sf += af[1];
     }

@@ -265,6 +265,26 @@ FN(t_hgfv, mist_hg_samplef(0.05f + 0.9f * y, x))
 FN(t_eq6fv, draine_eq6f(0.05f + 0.9f * y, 1 + 499 * y, x))
 FN(t_drfv, mist_draine_samplef(0.05f + 0.9f * y, 1 + 499 * y, x))
 
+/* the compact prepared form (mist_phasec_*, 60 bytes in float), by value in
+ * the functor as a closure would hold it; and prepared anew for each call
+ * from a varying medium, as a closure built per shading point */
+struct t_pcf {
+    mist_phasecf c;
+    __device__ float operator()(float x, float y) const { (void)y; return mist_phasec_samplef(&c, x); }
+};
+struct t_pcd {
+    mist_phasec c;
+    __device__ float operator()(float x, float y) const
+        { (void)y; return (float)mist_phasec_sample(&c, (double)x); }
+};
+struct t_pcfv {
+    __device__ float operator()(float x, float y) const
+    {
+        mist_phasecf c = mist_phasec_drainef(0.05f + 0.9f * y, 1 + 499 * y);
+        return mist_phasec_samplef(&c, x);
+    }
+};
+
 static float *t_out;
 static int t_blocks, t_threads = 256;
 
@@ -304,8 +324,9 @@ static void throughput(void)
 {
     mist_phasef hpf_hg = mist_phase_hgf(0.8f), hpf_dr = mist_phase_drainef(0.5f, 17.0f);
     mist_phasef hpf_fog = mist_phase_fogf(mist_fog_makef(0.9f, 0.5f, 250.0f, 0.3f));
+    mist_phasef hpf_f10 = mist_phase_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
     mist_phase hpd_dr = mist_phase_draine(0.5, 17.0);
-    mist_phasef *pf_hg, *pf_dr, *pf_fog;
+    mist_phasef *pf_hg, *pf_dr, *pf_fog, *pf_f10;
     mist_phase *pd_dr;
     cudaDeviceProp prop;
     double b;
@@ -314,6 +335,8 @@ static void throughput(void)
     CK(cudaMalloc(&t_out, sizeof(float) * t_blocks * t_threads));
     CK(cudaMalloc(&pf_hg, sizeof *pf_hg)); CK(cudaMalloc(&pf_dr, sizeof *pf_dr));
     CK(cudaMalloc(&pf_fog, sizeof *pf_fog)); CK(cudaMalloc(&pd_dr, sizeof *pd_dr));
+    CK(cudaMalloc(&pf_f10, sizeof *pf_f10));
+    CK(cudaMemcpy(pf_f10, &hpf_f10, sizeof hpf_f10, cudaMemcpyHostToDevice));
     CK(cudaMemcpy(pf_hg, &hpf_hg, sizeof hpf_hg, cudaMemcpyHostToDevice));
     CK(cudaMemcpy(pf_dr, &hpf_dr, sizeof hpf_dr, cudaMemcpyHostToDevice));
     CK(cudaMemcpy(pf_fog, &hpf_fog, sizeof hpf_fog, cudaMemcpyHostToDevice));
@@ -328,6 +351,13 @@ static void throughput(void)
     b = time_one(mk<t_eq6f>(0.5f, 17, 0, 0));  row("Draine sample, printed eq. 6, g .5 alpha 17", b, b);
     row("mist_draine_samplef", time_one(mk<t_drf>(0.5f, 17, 0, 0)), b);
     row("mist_phase_samplef (Draine, prepared)", time_one(mk<t_phf>(0, 0, pf_dr, 0)), b);
+    {
+        t_pcf c; c.c = mist_phasec_drainef(0.5f, 17.0f);
+        row("mist_phasec_samplef (Draine, compact)", time_one(c), b);
+        row("mist_phase_samplef (fog 10 um, prepared)", time_one(mk<t_phf>(0, 0, pf_f10, 0)), b);
+        c.c = mist_phasec_fogf(mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f));
+        row("mist_phasec_samplef (fog 10 um, compact)", time_one(c), b);
+    }
     b = time_one(mk<t_hgevp>(0.8f, 0, 0, 0));  row("HG eval, printed eq. 2", b, b);
     row("mist_hg_evalf", time_one(mk<t_hgev>(0.8f, 0, 0, 0)), b);
     b = time_one(mk<t_drevp>(0.5f, 17, 0, 0)); row("Draine eval, printed eq. 5", b, b);
@@ -337,11 +367,16 @@ static void throughput(void)
     row("mist_hg_samplef, g varying per call", time_one(mk<t_hgfv>(0, 0, 0, 0)), b);
     b = time_one(mk<t_eq6fv>(0, 0, 0, 0));     row("Draine sample, eq. 6, g and alpha varying", b, b);
     row("mist_draine_samplef, g and alpha varying", time_one(mk<t_drfv>(0, 0, 0, 0)), b);
+    row("mist_phasec_drainef + _samplef, each call", time_one(t_pcfv()), b);
     b = time_one(mk<t_eq3d>(0.8f, 0, 0, 0));   row("HG sample, printed eq. 3, double", b, b);
     row("mist_hg_sample (double)", time_one(mk<t_hgd>(0.8f, 0, 0, 0)), b);
     b = time_one(mk<t_eq6d>(0.5f, 17, 0, 0));  row("Draine sample, printed eq. 6, double", b, b);
     row("mist_draine_sample (double)", time_one(mk<t_drd>(0.5f, 17, 0, 0)), b);
     row("mist_phase_sample (double, Draine, prepared)", time_one(mk<t_phd>(0, 0, 0, pd_dr)), b);
+    {
+        t_pcd c; c.c = mist_phasec_draine(0.5, 17.0);
+        row("mist_phasec_sample (double, Draine, compact)", time_one(c), b);
+    }
 }
 
 /* ------------------------------------------------------------------------ */
