@@ -35,12 +35,14 @@
  *                  lines "BEGIN TABLE" and "END TABLE"
  *   --svg FILE     plot the errors and the parameters against d, beside
  *                  the published fits' (docs/droplet_fit.svg)
+ *   --table        no fit: report on (and plot) the header's table
  *   --five         also fit a fifth parameter at docs/mie.md's diameters:
  *                  a second Draine lobe (g2, weight w2, alpha as the first)
  *                  for the backward glory, and print what it gains
  * Build: cmake --build build --target mist_fit_droplet
  * Run:   ./build/mist_fit_droplet --header include/mist.h --svg docs/droplet_fit.svg
- *        (about 2-3 minutes of one core). */
+ *        (about 7 minutes of one core: 2 sweeps);
+ *        ./build/mist_fit_droplet --table --five  (the header's table, ~1 minute) */
 #include "mist.h"
 #include "mist_mie.h"
 #include "mist_dropfit.h"
@@ -113,13 +115,15 @@ static void stage2(double *tab, int n, int fine, const double *refs, int sweeps)
 }
 
 /* ---- the header --------------------------------------------------------- */
+/* 9 decimals; log alpha at most 6.907755278, below log 1000 (so that alpha
+ * <= 1000 holds after rounding too) */
 static void print_table(FILE *f, const double *tab, int n)
 {
     int k;
     for (k = 0; k < n; ++k)
         fprintf(f, "        %.9f, %.9f, %.9f, %.9f,%s /* %.4g um */\n", tab[4 * k],
-                tab[4 * k + 1], tab[4 * k + 2], tab[4 * k + 3], k + 1 < n ? "" : " ",
-                dropfit_node_d(k, n));
+                tab[4 * k + 1], tab[4 * k + 2] < 6.907755278 ? tab[4 * k + 2] : 6.907755278,
+                tab[4 * k + 3], k + 1 < n ? "" : " ", dropfit_node_d(k, n));
 }
 
 static int write_header(const char *path, const double *tab, int n)
@@ -222,7 +226,7 @@ static int write_svg(const char *path, const double *tab, int n, int fine, const
     double *d = (double *)malloc(sizeof(double) * 11 * (size_t)(m + 1)), *e = d + m + 1;
     FILE *f = fopen(path, "w");
     static const double tl1[] = { 0.001, 0.01, 0.1, 1 }, tlr[] = { 0.001, 0.01, 0.1, 1 },
-                        tg[] = { 0, 0.25, 0.5, 0.75, 1 }, ta[] = { 1, 10, 100, 1000 };
+                        tg[] = { -0.2, 0, 0.25, 0.5, 0.75, 1 }, ta[] = { 1, 10, 100, 1000 };
     panel pl[4];
     if (!f || !d) { perror(path); return 1; }
     /* e: L1 new, published, logRMS new, published, then g_hg, g_d, w_d, alpha new and
@@ -239,22 +243,20 @@ static int write_svg(const char *path, const double *tab, int n, int fine, const
         e[8 * (m + 1) + j] = a.w_d;  e[9 * (m + 1) + j] = b.w_d;
     }
     fprintf(f, "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' "
-               "version='1.1' width='1100' height='800' font-family='sans-serif'>\n"
-               "<rect width='1100' height='800' fill='#fafafa'/>\n"
+               "version='1.1' width='1100' height='830' font-family='sans-serif'>\n"
+               "<rect width='1100' height='830' fill='#fafafa'/>\n"
                "<text x='20' y='28' font-size='18' font-weight='bold'>mist: the fog mix "
                "against Lorenz-Mie, droplet diameters 0.01-50 um</text>\n"
                "<text x='20' y='48' font-size='12'>Water, 450/550/650 nm averaged, lognormal "
-               "width 1.1 (docs/mie.md). Solid: mist_fog_from_diameter_mie (fitted here, "
-               "continuous); dashed: mist_fog_from_diameter (the published fits, eq. 7-22; "
-               "broken at their range limits 0.1, 1.5, 5 um).</text>\n");
+               "width 1.1 (docs/mie.md); errors below 1e-4 are drawn at the axis.</text>\n");
     pl[0].x0 = 80;  pl[0].y0 = 90;  pl[0].lo = 1e-4; pl[0].hi = 1;   pl[0].logy = 1;
     pl[1].x0 = 620; pl[1].y0 = 90;  pl[1].lo = 1e-4; pl[1].hi = 1;   pl[1].logy = 1;
-    pl[2].x0 = 80;  pl[2].y0 = 460; pl[2].lo = -0.05; pl[2].hi = 1;  pl[2].logy = 0;
+    pl[2].x0 = 80;  pl[2].y0 = 460; pl[2].lo = -0.2;  pl[2].hi = 1;  pl[2].logy = 0;
     pl[3].x0 = 620; pl[3].y0 = 460; pl[3].lo = 1;    pl[3].hi = 1000; pl[3].logy = 1;
     for (q = 0; q < 4; ++q) { pl[q].w = 440; pl[q].h = 270; }
     svg_frame(f, &pl[0], "L1 = \xe2\x88\xab |p - p_Mie| d\xce\xa9", tl1, 4);
     svg_frame(f, &pl[1], "logRMS = RMS over \xce\xb8 of log10(p / p_Mie)", tlr, 4);
-    svg_frame(f, &pl[2], "g_hg (blue), g_d (red), w_d (green)", tg, 5);
+    svg_frame(f, &pl[2], "g_hg (blue), g_d (red), w_d (green)", tg, 6);
     svg_frame(f, &pl[3], "alpha", ta, 4);
     svg_curve(f, &pl[0], d, e, m + 1, "#1f5fbf", 0, 0);
     svg_curve(f, &pl[0], d, e + (m + 1), m + 1, "#1f5fbf", 1, 1);
@@ -279,9 +281,10 @@ static int write_svg(const char *path, const double *tab, int n, int fine, const
         svg_curve(f, &pl[3], d, v + m + 1, m + 1, "#555", 1, 1);
         free(v);
     }
-    svg_legend(f, 100, 395, "#333", 0, "fitted to Mie here (mist_fog_from_diameter_mie)");
-    svg_legend(f, 100, 415, "#333", 1, "published fits (mist_fog_from_diameter)");
-    fprintf(f, "<text x='620' y='400' font-size='12'>%d diameters uniform in log d; the table "
+    svg_legend(f, 80, 790, "#333", 0, "mist_fog_from_diameter_mie: fitted to Mie, continuous");
+    svg_legend(f, 80, 810, "#333", 1, "mist_fog_from_diameter: the published fits [JD23 "
+               "eq. 7-22], broken where their ranges meet (0.1, 1.5, 5 um)");
+    fprintf(f, "<text x='620' y='794' font-size='12'>%d diameters uniform in log d; the table "
                "has %d nodes (tools/fit_droplet.c)</text>\n</svg>\n", m + 1, n);
     fclose(f);
     free(d);
@@ -292,18 +295,23 @@ static int write_svg(const char *path, const double *tab, int n, int fine, const
 /* (1 - w - w2) HG(g_hg) + w Draine(g_d, alpha) + w2 Draine(g2, alpha):
  * x[4] = atanh g2, x[5] = logit of w2's share of the Draine weight */
 static const double *five_ref;
-static double five_x4[2];
 
-static double five_obj6(const double *x6)
+static void five_errors(const double *x6, const double *ref, double *l1, double *lr)
 {
     mist_fog f = dropfit_fog(x6);
-    double g2 = tanh(x6[4]), sh = 1 / (1 + exp(-x6[5])), l1 = 0, lr = 0, p[NTH];
+    double g2 = tanh(x6[4]), sh = 1 / (1 + exp(-x6[5])), p[NTH];
     int i;
     for (i = 0; i < NTH; ++i)
         p[i] = (1 - f.w_d) * mist_hg_eval(f.g_hg, mu[i])
              + f.w_d * ((1 - sh) * mist_draine_eval(f.g_d, f.alpha, mu[i])
                         + sh * mist_draine_eval(g2, f.alpha, mu[i]));
-    fitref_errors(p, five_ref, &l1, &lr);
+    fitref_errors(p, ref, l1, lr);
+}
+
+static double five_obj6(const double *x6)
+{
+    double l1, lr;
+    five_errors(x6, five_ref, &l1, &lr);
     return lr * lr + DF_L1_WEIGHT * DF_L1_WEIGHT * l1 * l1;
 }
 
@@ -329,7 +337,6 @@ static void five(const double *tab, int n, int ch, int nr)
 {
     static double ref[NTH];
     size_t i;
-    (void)five_x4;
     printf("\nA fifth parameter: a second Draine lobe (g2, its share of w_d; alpha shared)\n"
            "| d (um) | 4-param L1 | logRMS | 5-param L1 | logRMS | g2 | share |\n"
            "|---|---|---|---|---|---|---|\n");
@@ -343,9 +350,9 @@ static void five(const double *tab, int n, int ch, int nr)
         dropfit_ref(d, ch, ref, nr);
         five_ref = ref;
         dropfit_err(f, ref, &l1, &lr);
-        for (s = 0; s < 3; ++s) {
+        for (s = 0; s < 4; ++s) {        /* the last start is the 4-parameter fit */
             dropfit_coords(f, five_x);
-            five_x[4] = atanh(g2s[s]); five_x[5] = log(0.1 / 0.9);
+            five_x[4] = atanh(g2s[s % 3]); five_x[5] = s < 3 ? log(0.1 / 0.9) : -14;
             for (it = 0; it < 6; ++it) {
                 memcpy(y, five_x, sizeof y);
                 o = dropfit_nm_fn(y, five_obj_a, NULL, 0.2, 2000);
@@ -356,30 +363,23 @@ static void five(const double *tab, int n, int ch, int nr)
             }
             if (o < best) { best = o; memcpy(keep, five_x, sizeof keep); }
         }
-        {
-            mist_fog g = dropfit_fog(keep);
-            double g2 = tanh(keep[4]), sh = 1 / (1 + exp(-keep[5])), p[NTH];
-            int k;
-            for (k = 0; k < NTH; ++k)
-                p[k] = (1 - g.w_d) * mist_hg_eval(g.g_hg, mu[k])
-                     + g.w_d * ((1 - sh) * mist_draine_eval(g.g_d, g.alpha, mu[k])
-                                + sh * mist_draine_eval(g2, g.alpha, mu[k]));
-            fitref_errors(p, ref, &l5, &r5);
-            printf("| %g | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, l1, lr, l5, r5, g2,
-                   sh);
-            fflush(stdout);
-        }
+        five_errors(keep, ref, &l5, &r5);
+        printf("| %g | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, l1, lr, l5, r5,
+               tanh(keep[4]), 1 / (1 + exp(-keep[5])));
+        fflush(stdout);
     }
 }
 
 int main(int argc, char **argv)
 {
-    int n = MIST__DROP_N, fine = 4, nr = 200, sweeps = 8, ch = -1, i, m, j, worse = 0, do5 = 0;
+    int n = MIST__DROP_N, fine = 4, nr = 200, sweeps = 8, ch = -1, i, m, j, worse = 0, do5 = 0,
+        fit = 1;
     const char *header = NULL, *svg = NULL;
     double *tab, *refs, sl = 0, sr = 0, spl = 0, spr = 0;
     for (i = 1; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--five")) { do5 = 1; continue; }
+        if (!strcmp(a, "--table")) { fit = 0; continue; }
         if (!v) { fprintf(stderr, "%s: needs a value\n", a); return 2; }
         ++i;
         if (!strcmp(a, "--nodes")) n = atoi(v);
@@ -395,8 +395,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "bad --nodes, --fine or --radii\n");
         return 2;
     }
-    if (header && (ch >= 0 || n != MIST__DROP_N)) {
-        fprintf(stderr, "--header takes the default channel and node count only\n");
+    if ((header || !fit) && (ch >= 0 || n != MIST__DROP_N)) {
+        fprintf(stderr, "--header and --table take the default channel and node count only\n");
         return 2;
     }
     (void)fitref_compare;       /* tests/mist_fitref.h's, not used here */
@@ -406,8 +406,13 @@ int main(int argc, char **argv)
     refs = (double *)malloc(sizeof(double) * NTH * (size_t)(m + 1));
     if (!tab || !refs) return 1;
     for (j = 0; j <= m; ++j) dropfit_ref(dropfit_fine_d(j, n, fine), ch, refs + (size_t)j * NTH, nr);
-    stage1(tab, n, ch, nr);
-    stage2(tab, n, fine, refs, sweeps);
+    if (fit) {
+        stage1(tab, n, ch, nr);
+        stage2(tab, n, fine, refs, sweeps);
+    } else {                     /* the header's nodes: the interpolant at them */
+        for (i = 0; i < n; ++i)
+            dropfit_set_row(tab, i, mist_fog_from_diameter_mie(dropfit_node_d(i, n)));
+    }
 
     printf("/* %d nodes, log d uniform from 0.01 to 50 um: g_hg, g_d, log alpha, w_d */\n", n);
     print_table(stdout, tab, n);
@@ -426,14 +431,20 @@ int main(int argc, char **argv)
     {
         static double ref[NTH];
         double a = 0, b = 0, c = 0, e = 0;
-        printf("\nAt docs/mie.md's diameters:\n| d (um) | L1 | logRMS | published L1 | logRMS |\n"
-               "|---|---|---|---|---|\n");
+        printf("\nAt docs/mie.md's diameters:\n| d (um) | L1 | logRMS | published L1 | logRMS |%s\n"
+               "|---|---|---|---|---|%s\n", ch >= 0 ? " the header's (RGB mean) L1 | logRMS |" : "",
+               ch >= 0 ? "---|---|" : "");
         for (i = 0; i < (int)N_TABLE_DS; ++i) {
-            double l1, lr, pl1, plr;
+            double l1, lr, pl1, plr, hl1, hlr;
             dropfit_ref(table_ds[i], ch, ref, nr);
             dropfit_err(mist__fog_interp(tab, n, table_ds[i]), ref, &l1, &lr);
             dropfit_err(mist_fog_from_diameter(table_ds[i]), ref, &pl1, &plr);
-            printf("| %g | %.4f | %.4f | %.4f | %.4f |\n", table_ds[i], l1, lr, pl1, plr);
+            printf("| %g | %.4f | %.4f | %.4f | %.4f |", table_ds[i], l1, lr, pl1, plr);
+            if (ch >= 0) {             /* the header's model against this channel */
+                dropfit_err(mist_fog_from_diameter_mie(table_ds[i]), ref, &hl1, &hlr);
+                printf(" %.4f | %.4f |", hl1, hlr);
+            }
+            printf("\n");
             a += log(l1); b += log(lr); c += log(pl1); e += log(plr);
         }
         printf("geometric means: L1 %.4f (published %.4f), logRMS %.4f (published %.4f)\n",
