@@ -140,7 +140,9 @@ static int write_header(const char *path, const double *tab, int n)
     b = strstr(buf, "BEGIN TABLE");
     e = b ? strstr(b, "END TABLE") : NULL;
     if (!b || !e) { fprintf(stderr, "%s: no BEGIN TABLE ... END TABLE\n", path); return 1; }
-    b = strchr(b, '\n') + 1;
+    b = strchr(b, '\n');
+    if (!b || b > e) { fprintf(stderr, "%s: BEGIN TABLE must end its line\n", path); return 1; }
+    ++b;
     while (e > buf && e[-1] != '\n') --e;
     f = fopen(path, "wb");
     if (!f) { perror(path); return 1; }
@@ -386,7 +388,10 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--fine")) fine = atoi(v);
         else if (!strcmp(a, "--radii")) nr = atoi(v);
         else if (!strcmp(a, "--sweeps")) sweeps = atoi(v);
-        else if (!strcmp(a, "--channel")) ch = *v == 'r' ? 0 : *v == 'g' ? 1 : *v == 'b' ? 2 : -1;
+        else if (!strcmp(a, "--channel")) {
+            ch = !strcmp(v, "r") ? 0 : !strcmp(v, "g") ? 1 : !strcmp(v, "b") ? 2 : -2;
+            if (ch < -1) { fprintf(stderr, "--channel takes r, g or b\n"); return 2; }
+        }
         else if (!strcmp(a, "--header")) header = v;
         else if (!strcmp(a, "--svg")) svg = v;
         else { fprintf(stderr, "unknown option %s\n", a); return 2; }
