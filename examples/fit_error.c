@@ -18,9 +18,10 @@
  *   logRMS = sqrt(1/pi int_0^pi log10(p_fit / p_mie)^2 dtheta), the log-space
  *            kind of error a fit of phase-function plots minimises.
  * Columns: the fit (eq. 7-22, eq. 8 and 10 read with the constants inside
- * the exponential, as mist does), the printed reading of eq. 8 and 10 (5-50
- * um only), and HG with the Mie asymmetry g as the baseline a renderer
- * would otherwise use.
+ * the exponential, as mist does), mist_fog_from_diameter_mie (the same
+ * mix fitted to this reference by tools/fit_droplet.c, continuous in d),
+ * the printed reading of eq. 8 and 10 (5-50 um only), and HG with the Mie
+ * asymmetry g as the baseline a renderer would otherwise use.
  *
  * Run: ./build/mist_fit_error  (prints a Markdown table; README "Fit error"
  * is its output). */
@@ -36,20 +37,26 @@ int main(int argc, char **argv)
     static const double ds[] = { 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 1.5, 2, 3, 5, 7, 10,
                                  15, 20, 30, 50 };
     int n_radii = argc > 1 ? atoi(argv[1]) : 200;
-    size_t k;
+    size_t k, nd = sizeof ds / sizeof *ds;
+    double gm[4] = { 0, 0, 0, 0 };
     fitref_grid();
-    printf("| d (um) | Mie g | fit L1 | fit logRMS | printed eq. 8, 10: L1 | logRMS "
-           "| HG(g_Mie) L1 | logRMS |\n|---|---|---|---|---|---|---|---|\n");
-    for (k = 0; k < sizeof ds / sizeof *ds; ++k) {
+    printf("| d (um) | Mie g | fit L1 | fit logRMS | fitted to Mie: L1 | logRMS "
+           "| printed eq. 8, 10: L1 | logRMS | HG(g_Mie) L1 | logRMS |\n"
+           "|---|---|---|---|---|---|---|---|---|---|\n");
+    for (k = 0; k < nd; ++k) {
         double d = ds[k];
         fitref_row r = fitref_compare(d, n_radii);
         if (d >= 5)
-            printf("| %g | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, r.g, r.l1,
-                   r.lr, r.l1p, r.lrp, r.l1h, r.lrh);
+            printf("| %g | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d,
+                   r.g, r.l1, r.lr, r.l1m, r.lrm, r.l1p, r.lrp, r.l1h, r.lrh);
         else
-            printf("| %g | %.4f | %.3f | %.3f | | | %.3f | %.3f |\n", d, r.g, r.l1, r.lr,
-                   r.l1h, r.lrh);
+            printf("| %g | %.4f | %.3f | %.3f | %.3f | %.3f | | | %.3f | %.3f |\n", d, r.g, r.l1,
+                   r.lr, r.l1m, r.lrm, r.l1h, r.lrh);
+        gm[0] += log(r.l1); gm[1] += log(r.lr); gm[2] += log(r.l1m); gm[3] += log(r.lrm);
         fflush(stdout);
     }
+    printf("\nGeometric means over these diameters: the fits L1 %.3f, logRMS %.3f; fitted to "
+           "Mie L1 %.3f, logRMS %.3f\n", exp(gm[0] / (double)nd), exp(gm[1] / (double)nd),
+           exp(gm[2] / (double)nd), exp(gm[3] / (double)nd));
     return 0;
 }

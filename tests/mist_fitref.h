@@ -73,24 +73,27 @@ static mist_fog fog_printed(double d)
 }
 
 /* One diameter: Mie's g and the errors (L1, logRMS) of the fit, of the
- * printed reading of eq. 8 and 10, and of HG with the Mie asymmetry. */
-typedef struct { double g, l1, lr, l1p, lrp, l1h, lrh; } fitref_row;
+ * printed reading of eq. 8 and 10, of HG with the Mie asymmetry, and of
+ * mist_fog_from_diameter_mie (fitted to this reference). */
+typedef struct { double g, l1, lr, l1p, lrp, l1h, lrh, l1m, lrm; } fitref_row;
 
 static fitref_row fitref_compare(double d, int n_radii)
 {
-    static double ref[NTH], p[NTH], q[NTH], h[NTH];
+    static double ref[NTH], p[NTH], q[NTH], h[NTH], m[NTH];
     fitref_row r;
-    mist_fog f = mist_fog_from_diameter(d), fp = fog_printed(d);
+    mist_fog f = mist_fog_from_diameter(d), fp = fog_printed(d), fm = mist_fog_from_diameter_mie(d);
     int i;
     r.g = fitref_mie(d, ref, n_radii);
     for (i = 0; i < NTH; ++i) {
         p[i] = mist_fog_eval(f, mu[i]);
         q[i] = mist_fog_eval(fp, mu[i]);
         h[i] = mist_hg_eval(r.g, mu[i]);
+        m[i] = mist_fog_eval(fm, mu[i]);
     }
     fitref_errors(p, ref, &r.l1, &r.lr);
     fitref_errors(q, ref, &r.l1p, &r.lrp);
     fitref_errors(h, ref, &r.l1h, &r.lrh);
+    fitref_errors(m, ref, &r.l1m, &r.lrm);
     return r;
 }
 

@@ -88,7 +88,7 @@ static double rayleigh(double x)
 #ifdef EXPECT_NO_FOG
 #  define FOG_NAMES(X) X(mist_fog_make) X(mist_fog_eval) X(mist_fog_sample)          \
      X(mist_fog_sample_dir) X(mist_fog_from_diameter) X(mist_phase_fog) X(mist_phase_hg) \
-     X(mist_phase_eval) X(mist_phase_sample)
+     X(mist_phase_eval) X(mist_phase_sample) X(mist_fog_from_diameter_mie)
 FOG_NAMES(ABSENT)
 static double fog(double x) { (void)x; return 0 FOG_NAMES(USE); }
 #else

@@ -19,11 +19,13 @@ MIST_FUNC double use_all(double x)
     s += mist_draine_eval(0.5, 2.0, x) + mist_draine_sample(0.5, 2.0, x);
     s += mist_rayleigh_eval(x) + mist_rayleigh_sample(x);
     s += mist_fog_eval(fog, x) + mist_fog_sample(fog, x);
+    s += mist_fog_from_diameter_mie(x).g_hg;
     sf += mist_hg_evalf(0.5f, xf) + mist_hg_samplef(0.5f, xf);
     sf += mist_cs_evalf(0.5f, xf) + mist_cs_samplef(0.5f, xf);
     sf += mist_draine_evalf(0.5f, 2.0f, xf) + mist_draine_samplef(0.5f, 2.0f, xf);
     sf += mist_rayleigh_evalf(xf) + mist_rayleigh_samplef(xf);
     sf += mist_fog_evalf(fogf, xf) + mist_fog_samplef(fogf, xf);
+    sf += mist_fog_from_diameter_mief(xf).g_hg;
     wo = mist_hg_sample_dir(0.5, wi, x, x, &pdf); s += wo.x + pdf;
     wo = mist_cs_sample_dir(0.5, wi, x, x, &pdf); s += wo.y + pdf;
     wo = mist_draine_sample_dir(0.5, 2.0, wi, x, x, &pdf); s += wo.z + pdf;
