@@ -4921,19 +4921,32 @@ MIST__F MIST__V3 MIST__FN(mist__unit)(MIST__V3 v)
     return MIST__FN(mist__impl_normalize)(v);
 }
 
-/* a . b as hi + *lo, exact to about eps^2 |a| |b| (Dot2 of Ogita, Rump and
- * Oishi: error-free products and sums; a low part lost only where a
- * product underflows) */
+/* a . b as hi + *lo, hi the dot product rounded to within an ulp however
+ * much it cancels: the six parts of the error-free products (two_prod)
+ * summed exactly into a nonoverlapping expansion (Shewchuk's
+ * Grow-Expansion: TwoSum chains), then the expansion added smallest
+ * first.  (A compensated dot product, Dot2, errs by eps^2 of the terms: a
+ * ray level to 1e-10 along a rotated float axis lost 15 eps.)  Exact but
+ * for products whose low parts underflow (terms below ~2^-900 in double,
+ * 2^-100 in float, of the largest). */
 MIST__F MIST__T MIST__FN(mist__dot2)(MIST__V3 a, MIST__V3 b, MIST__T *lo)
 {
-    MIST__T e1, e2, e3, q1, q2, s;
-    MIST__T p1 = MIST__FN(mist__two_prod)(a.x, b.x, &e1);
-    MIST__T p2 = MIST__FN(mist__two_prod)(a.y, b.y, &e2);
-    MIST__T p3 = MIST__FN(mist__two_prod)(a.z, b.z, &e3);
-    s = MIST__FN(mist__two_sum)(p1, p2, &q1);
-    s = MIST__FN(mist__two_sum)(s, p3, &q2);
-    s = MIST__FN(mist__two_sum)(s, ((e1 + e2) + e3) + (q1 + q2), lo);
-    return s;
+    MIST__T x[6], e[6], q, h, s;
+    int i, j, m = 0;
+    x[0] = MIST__FN(mist__two_prod)(a.x, b.x, &x[1]);
+    x[2] = MIST__FN(mist__two_prod)(a.y, b.y, &x[3]);
+    x[4] = MIST__FN(mist__two_prod)(a.z, b.z, &x[5]);
+    for (i = 0; i < 6; ++i) {
+        q = x[i];
+        for (j = 0; j < m; ++j) {
+            q = MIST__FN(mist__two_sum)(q, e[j], &h);
+            e[j] = h;
+        }
+        e[m++] = q;
+    }
+    s = e[0];
+    for (j = 1; j < 5; ++j) s += e[j];
+    return MIST__FN(mist__two_sum)(e[5], s, lo);
 }
 
 /* The fog's height axis as used (*a): 0 where it is the y axis (up all
@@ -5349,17 +5362,16 @@ MIST__F MIST__T MIST__FN(mist__impl_hfog_sample_distance)(const MIST__HFOG *fog,
         ka = kw - kH;
         if (!(mK <= MIST__BIG)) {                    /* K > e^(64 XLIM) */
             /* up: z >> 1, no collision.  Down: t = H ln(z) / |w|
-             * = ((y - yb) + H ln A) / |w|,  A = |w| T / (H st density),
-             * |ln A| < 64 XLIM / 10 against ln z: no cancellation */
-            MIST__T mA, lnA, n, ne, p, pe;
+             * = (y - yb) / |w| + (H / |w|) ln A,  A = |w| T / (H st density),
+             * |ln A| < 64 XLIM / 10 against ln z: no cancellation; H / |w|
+             * = 2^-ka / ma, scaled (H ln A alone may be subnormal) */
+            MIST__T mA, lnA, n, ne;
             int kT;
             if (w > MIST__C(0)) return (MIST__T)INFINITY;
             mA = MIST__FN(mist__frexp)(T, &kT) * ma / q;
             lnA = MIST__M(log)(mA) + (MIST__T)(kT + ka - ks - kd - sx) * ln2;
             n = MIST__FN(mist__two_sum)(y, -yb, &ne);
-            p = MIST__FN(mist__two_prod)(H, lnA, &pe);
-            n = MIST__FN(mist__two_sum)(n, p, &p);
-            t = (n + (p + ne + pe)) / aw;
+            t = n / aw + (MIST__FN(mist__ldexp)(lnA / ma, -ka) + ne / aw);
         } else {
             zm = MIST__FN(mist__frexp)(mK * ma, &j);
             kz = kK + ka + j;

@@ -1,0 +1,423 @@
+/* test_hfog_path.c - the height fog's functions for path tracers (include/
+ * mist.h, "Analytic height fog": mist_hfog_extinction, _optical_depth,
+ * _sample_distance), its height axis (up) and its Mie phase function
+ * (mie_prepared, mie_tab):
+ *
+ *   exact      sample_distance against an independent long double root of
+ *              the optical depth's logarithm (bisection, never the closed
+ *              inversion), double and float, over level, nearly level and
+ *              steep rays, starts far below and far above the base, scale
+ *              heights from subnormal to +inf, densities e^+-690, any tmax,
+ *              and over rotated scenes (the height along any unit axis);
+ *   monotone   t non-decreasing in xi over dense runs of xi;
+ *   chi2       sampled distances against the density integrated by
+ *              adaptive quadrature (mist_test.h), with negative controls
+ *              that must be rejected;
+ *   depth      optical_depth and extinction against long double;
+ *   pt         a path-traced estimate of the single-scattered in-scatter
+ *              (free-flight distances, the phase functions, the sun's
+ *              transmittance from optical_depth) against mist_hfog_inscatter
+ *              within its Monte Carlo error, and a control that must fail;
+ *   up, phase  the up axis and the Mie phase function's forms;
+ *   bad        bad input: the documented values, never NaN.
+ *
+ * The bar for a distance: |t - t*| <= 4 ulp(t*) + 4 eps xi dt* / dxi, eps of
+ * the type (unit roundoff), dt* / d xi = 1 / ((1 - xi) sigma(t*)), plus the
+ * reference's own rounding (REF_ERR below, reported). */
+#include "mist.h"
+#include "mist_test.h"
+
+#include <float.h>
+#include <string.h>
+
+#if LDBL_MANT_DIG < 64 || LDBL_MAX_EXP < 16384
+#  error "test_hfog_path needs an x87 or binary128 long double"
+#endif
+typedef long double LD;
+
+/* ------------------------------------------------------------------------ */
+/* Reference (long double, log domain)                                      */
+/* ------------------------------------------------------------------------ */
+
+/* One channel of one fog along one ray, in long double: ln(st d0) (lc0),
+ * the start's height over H (h0 = (y - base)/H; 0 when uniform), the
+ * vertical rate a = w / H, and M, the largest magnitude the logarithm of
+ * the depth sums (its rounding is 2^-63 M at most: REF_ERR). */
+typedef struct { LD lc0, h0, a; int uniform; LD M; } rray;
+
+static LD fabsld(LD x) { return x < 0 ? -x : x; }
+
+/* a . b for vectors of doubles (or floats) as hi + *lo in long double:
+ * products error-free (fmal), sums too (TwoSum), exact to ~2^-128 of the
+ * terms: the rotated scenes' heights and slopes without the reference's
+ * own cancellation */
+static LD two_sum_ld(LD a, LD b, LD *e)
+{
+    volatile LD s = a + b, bb = s - a;
+    *e = (a - (s - bb)) + (b - bb);
+    return s;
+}
+static LD dot_ld(const LD *a, const LD *b, LD *lo)
+{
+    LD s = 0, e = 0, q;
+    int k;
+    for (k = 0; k < 3; ++k) {
+        LD p = a[k] * b[k], pe = fmal(a[k], b[k], -p);
+        s = two_sum_ld(s, p, &q);
+        e += q + pe;
+    }
+    s = two_sum_ld(s, e, lo);
+    return s;
+}
+
+/* ln(phi1(x)), phi1(x) = (1 - e^-x)/x */
+static LD lnphi1(LD x)
+{
+    if (x == 0) return 0;
+    if (x > 0) return logl(-expm1l(-x) / x);
+    x = -x;
+    if (x < 40) return logl(expm1l(x) / x);
+    return x + log1pl(-expl(-x)) - logl(x);
+}
+
+/* ln tau(t) (t > 0; -inf-free) */
+static LD ln_tau(const rray *r, LD t)
+{
+    return r->lc0 - r->h0 + logl(t) + (r->uniform ? 0 : lnphi1(r->a * t));
+}
+
+/* ln tau(+inf) for an up ray (a > 0): ln(C0 / a); +inf otherwise */
+static LD ln_tau_inf(const rray *r)
+{
+    if (r->uniform || !(r->a > 0)) return INFINITY;
+    return r->lc0 - r->h0 - logl(r->a);
+}
+
+/* The root t* of ln tau(t) = lnT by bisection (first on ln t, then on t):
+ * +inf where there is none. */
+static LD ref_root(const rray *r, LD lnT)
+{
+    LD lo = -11300, hi = 11300, m, a, b;
+    int i;
+    if (!(lnT < ln_tau_inf(r))) return INFINITY;
+    for (i = 0; i < 90; ++i) {
+        m = (lo + hi) / 2;
+        if (ln_tau(r, expl(m)) < lnT) lo = m; else hi = m;
+    }
+    a = expl(lo); b = expl(hi);
+    for (i = 0; i < 80; ++i) {
+        m = (a + b) / 2;
+        if (m == a || m == b) break;
+        if (ln_tau(r, m) < lnT) a = m; else b = m;
+    }
+    return (a + b) / 2;
+}
+
+/* the reference's relative rounding of ln tau: 2^-63 per magnitude met */
+#define REF_ERR(M) ((M) * 0x1p-62L)
+
+/* A fog's channel c along the ray, as mist's semantics define it: dir
+ * used as given where |dir|^2 is 1 to 16 eps (eps of the type), else
+ * normalised; the height along axis `up` (NULL: y). */
+static rray ref_ray(const mist_hfog *f, int c, const LD *o, const LD *d, const LD *up, LD eps)
+{
+    rray r;
+    LD st, y, w, n2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], e1, e2, ylo = 0, wlo = 0;
+    LD sR = c == 0 ? f->rayleigh_scat.r : c == 1 ? f->rayleigh_scat.g : f->rayleigh_scat.b;
+    LD sM = c == 0 ? f->mie_scat.r : c == 1 ? f->mie_scat.g : f->mie_scat.b;
+    e1 = c == 0 ? f->rayleigh_ext.r : c == 1 ? f->rayleigh_ext.g : f->rayleigh_ext.b;
+    e2 = c == 0 ? f->mie_ext.r : c == 1 ? f->mie_ext.g : f->mie_ext.b;
+    st = (e1 > sR ? e1 : sR) + (e2 > sM ? e2 : sM);
+    if (up) {
+        LD u2 = up[0] * up[0] + up[1] * up[1] + up[2] * up[2], un[3];
+        if (fabsld(u2 - 1) > 16 * eps) {      /* normalised, as mist does */
+            un[0] = up[0] / sqrtl(u2); un[1] = up[1] / sqrtl(u2); un[2] = up[2] / sqrtl(u2);
+            up = un;
+        }
+        y = dot_ld(o, up, &ylo);
+        w = dot_ld(d, up, &wlo);
+        w += wlo;
+    } else { y = o[1]; w = d[1]; }
+    if (fabsld(n2 - 1) > 16 * eps) w /= sqrtl(n2);
+    r.uniform = !(f->scale_height <= DBL_MAX);
+    r.lc0 = logl(st) + logl((LD)f->density);
+    {
+        LD dl, dh = two_sum_ld(y, -(LD)f->base, &dl);
+        r.h0 = r.uniform ? 0 : (dh + (dl + ylo)) / (LD)f->scale_height;
+    }
+    r.a = r.uniform ? 0 : w / (LD)f->scale_height;
+    r.M = fabsld(r.lc0) + fabsld(r.h0) + 8;
+    return r;
+}
+
+/* One check of a distance against the bar; returns got/bar's error ratio
+ * (0 where both agree there is no root).  flt: float's eps and ulp. */
+static double worst_ratio = 0, worst_ref = 0;
+static long n_checked = 0, n_bad = 0;
+static double check_t(const rray *r, double xi, double tmax, double got, int flt, const char *what)
+{
+    LD eps = flt ? 0x1p-24L : 0x1p-53L, lnT = logl(-log1pl(-(LD)xi)), ts, bar, ulp, sig, lm;
+    LD tmaxl = tmax, ratio;
+    int e;
+    ts = ref_root(r, lnT);
+    lm = r->M + fabsld(lnT);
+    ++n_checked;
+    if (ts > tmaxl || !(ts < INFINITY)) {
+        /* no root in [0, tmax]: +inf, or (within the bar) tmax itself */
+        if (got == INFINITY) return 0;
+        if (ts < INFINITY) {
+            ts = ts;       /* the root lies beyond tmax: got may be at most tmax */
+        } else {
+            /* no root at all (an up ray that escapes): lnT within the
+             * rounding of ln tau(inf), 8 eps, of the edge is fair */
+            if (lnT > ln_tau_inf(r) - 8 * eps - REF_ERR(lm) && got <= tmax && got >= 0) return 0;
+            ++n_bad;
+            if (n_bad < 10) printf("  %s: xi %.17g: got %.17g, no root\n", what, xi, got);
+            return 1e30;
+        }
+    }
+    /* ulp(t*) in the type, subnormals included */
+    (void)frexpl(ts, &e);
+    if (flt) ulp = ldexpl(1, (e - 24 > -149) ? e - 24 : -149);
+    else ulp = ldexpl(1, (e - 53 > -1074) ? e - 53 : -1074);
+    sig = r->lc0 - r->h0 - r->a * ts;               /* ln sigma(t*) */
+    bar = 4 * ulp + 4 * eps * expl(logl((LD)xi) - log1pl(-(LD)xi) - sig);
+    /* the reference's rounding: 2^-63 M relative in tau, T dt/dT = tau/sigma */
+    bar += REF_ERR(lm + fabsld(r->a * ts)) * expl(lnT - sig);
+    if (got == INFINITY) {
+        if (ts >= (flt ? (LD)FLT_MAX : (LD)DBL_MAX) || ts + bar >= tmaxl) return 0;
+        ++n_bad;
+        if (n_bad < 10) printf("  %s: xi %.17g: got +inf, t* %.17Lg\n", what, xi, ts);
+        return 1e30;
+    }
+    if (!(got >= 0)) { ++n_bad; return 1e30; }
+    ratio = fabsld((LD)got - ts) / bar;
+    if (ratio > worst_ratio) {
+        worst_ratio = (double)ratio;
+        worst_ref = (double)(REF_ERR(lm + fabsld(r->a * ts)) * expl(lnT - sig) / bar);
+    }
+    if (ratio > 1) {
+        ++n_bad;
+        if (n_bad < 10)
+            printf("  %s: xi %.17g tmax %g: got %.17g, t* %.20Lg (%.3Lg of the bar)\n", what, xi,
+                   tmax, got, ts, ratio);
+    }
+    return (double)ratio;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Fogs                                                                      */
+/* ------------------------------------------------------------------------ */
+
+static mist_hfog fog_make(double base, double dens, double H, double eR, double eM)
+{
+    mist_hfog f;
+    memset(&f, 0, sizeof f);
+    f.base = base; f.density = dens; f.scale_height = H;
+    f.rayleigh_scat.r = eR; f.rayleigh_scat.g = 2 * eR; f.rayleigh_scat.b = 4 * eR;
+    f.rayleigh_ext = f.rayleigh_scat;
+    f.mie_scat.r = f.mie_scat.g = f.mie_scat.b = 0.9 * eM;
+    f.mie_ext.r = f.mie_ext.g = f.mie_ext.b = eM;
+    f.mie_phase = mist_fog_make(0.6, 0.4, 1.5, 0.2);
+    return f;
+}
+
+static mist_hfogf fog_tof(const mist_hfog *f)
+{
+    mist_hfogf g;
+    memset(&g, 0, sizeof g);
+    g.base = (float)f->base; g.density = (float)f->density; g.scale_height = (float)f->scale_height;
+    g.rayleigh_scat.r = (float)f->rayleigh_scat.r; g.rayleigh_scat.g = (float)f->rayleigh_scat.g;
+    g.rayleigh_scat.b = (float)f->rayleigh_scat.b;
+    g.rayleigh_ext.r = (float)f->rayleigh_ext.r; g.rayleigh_ext.g = (float)f->rayleigh_ext.g;
+    g.rayleigh_ext.b = (float)f->rayleigh_ext.b;
+    g.mie_scat.r = (float)f->mie_scat.r; g.mie_scat.g = (float)f->mie_scat.g;
+    g.mie_scat.b = (float)f->mie_scat.b;
+    g.mie_ext.r = (float)f->mie_ext.r; g.mie_ext.g = (float)f->mie_ext.g; g.mie_ext.b = (float)f->mie_ext.b;
+    g.mie_phase = mist_fog_makef((float)f->mie_phase.g_hg, (float)f->mie_phase.g_d,
+                                 (float)f->mie_phase.alpha, (float)f->mie_phase.w_d);
+    g.sun_dir.x = (float)f->sun_dir.x; g.sun_dir.y = (float)f->sun_dir.y; g.sun_dir.z = (float)f->sun_dir.z;
+    g.sun.r = (float)f->sun.r; g.sun.g = (float)f->sun.g; g.sun.b = (float)f->sun.b;
+    g.ambient.r = (float)f->ambient.r; g.ambient.g = (float)f->ambient.g; g.ambient.b = (float)f->ambient.b;
+    g.sun_extinction = f->sun_extinction;
+    g.up.x = (float)f->up.x; g.up.y = (float)f->up.y; g.up.z = (float)f->up.z;
+    return g;
+}
+
+/* the fog as the type sees it (float: rounded) */
+static mist_hfog fog_round(const mist_hfog *f, int flt)
+{
+    mist_hfog r = *f;
+    if (flt) {
+        mist_hfogf g = fog_tof(f);
+        r.base = g.base; r.density = g.density; r.scale_height = g.scale_height;
+        r.rayleigh_scat.r = g.rayleigh_scat.r; r.rayleigh_scat.g = g.rayleigh_scat.g;
+        r.rayleigh_scat.b = g.rayleigh_scat.b;
+        r.rayleigh_ext.r = g.rayleigh_ext.r; r.rayleigh_ext.g = g.rayleigh_ext.g;
+        r.rayleigh_ext.b = g.rayleigh_ext.b;
+        r.mie_scat.r = g.mie_scat.r; r.mie_scat.g = g.mie_scat.g; r.mie_scat.b = g.mie_scat.b;
+        r.mie_ext.r = g.mie_ext.r; r.mie_ext.g = g.mie_ext.g; r.mie_ext.b = g.mie_ext.b;
+        r.up.x = g.up.x; r.up.y = g.up.y; r.up.z = g.up.z;
+    }
+    return r;
+}
+
+/* one distance: the type's function on the (rounded) inputs, checked */
+static double one(const mist_hfog *f0, int flt, const double *o, const double *d, double tmax,
+                  int c, double xi, const char *what)
+{
+    mist_hfog f = fog_round(f0, flt);
+    LD ol[3], dl[3], ul[3], eps = flt ? 0x1p-24L : 0x1p-53L;
+    double got;
+    int k, axis = !(f.up.x == 0 && f.up.y == 0 && f.up.z == 0);
+    rray r;
+    if (flt) {
+        mist_hfogf g = fog_tof(f0);
+        mist_vec3f of = { (float)o[0], (float)o[1], (float)o[2] }, df = { (float)d[0], (float)d[1], (float)d[2] };
+        float xf = (float)xi, tf = (float)tmax;
+        got = mist_hfog_sample_distancef(&g, of, df, tf, c, xf);
+        ol[0] = of.x; ol[1] = of.y; ol[2] = of.z; dl[0] = df.x; dl[1] = df.y; dl[2] = df.z;
+        xi = xf; tmax = tf;
+    } else {
+        mist_vec3 od = { o[0], o[1], o[2] }, dd = { d[0], d[1], d[2] };
+        got = mist_hfog_sample_distance(&f, od, dd, tmax, c, xi);
+        for (k = 0; k < 3; ++k) { ol[k] = o[k]; dl[k] = d[k]; }
+    }
+    ul[0] = f.up.x; ul[1] = f.up.y; ul[2] = f.up.z;
+    r = ref_ray(&f, c, ol, dl, axis ? ul : NULL, eps);
+    if (got != got) { ++n_bad; printf("  %s: NaN\n", what); return 1e30; }
+    {
+        long b0 = n_bad;
+        double q = check_t(&r, xi, tmax, got, flt, what);
+        if (n_bad > b0 && n_bad < 10)
+            printf("    (H %g, h0 %.6Lg, a %.6Lg, ln(st d0) %.6Lg, o %.17g %.17g %.17g, d %.17g %.17g %.17g, c %d)\n",
+                   f.scale_height, r.h0, r.a, r.lc0, o[0], o[1], o[2], d[0], d[1], d[2], c);
+        return q;
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Exactness over a grid                                                    */
+/* ------------------------------------------------------------------------ */
+
+static void test_exact(int flt)
+{
+    /* scale heights: subnormal, tiny, ordinary, huge, uniform */
+    const double Hs_d[] = { 0x1p-1060, 1e-200, 1e-3, 1, 1000, 1e200, INFINITY };
+    const double Hs_f[] = { 0x1p-140, 1e-30, 1e-3, 1, 1000, 1e30, INFINITY };
+    /* the start's height over H: density factors e^+-690 (float e^+-80),
+     * and far beyond (1e5: the density under- or overflows) */
+    const double h0s_d[] = { -1e5, -690, -30, -1, 0, 0.5, 30, 690, 1e5 };
+    const double h0s_f[] = { -1e5, -80, -10, -1, 0, 0.5, 10, 80, 1e5 };
+    const double ws_d[] = { 0, 1e-300, -1e-300, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3, 0.3, -0.3, 1, -1 };
+    const double ws_f[] = { 0, 1e-38, -1e-38, 1e-7, -1e-7, 1e-3, -1e-3, 0.3, -0.3, 1, -1 };
+    const double xis[] = { 0x1p-60, 1e-9, 1e-3, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 0x1p-24 };
+    const double dens[] = { 1e-5, 1, 3e4 };
+    const double *Hs = flt ? Hs_f : Hs_d, *h0s = flt ? h0s_f : h0s_d, *ws = flt ? ws_f : ws_d;
+    int nH = 7, nh = 9, nw = flt ? 11 : 13, iH, ih, iw, ix, id, it;
+    double before = worst_ratio;
+    long bad0 = n_bad, n0 = n_checked;
+    mt_rng rng;
+    rng.s = 7 + (uint64_t)flt;
+    worst_ratio = 0;
+    for (iH = 0; iH < nH; ++iH)
+        for (ih = 0; ih < nh; ++ih)
+            for (iw = 0; iw < nw; ++iw)
+                for (id = 0; id < 3; ++id) {
+                    double H = Hs[iH], base = id == 1 ? 0 : 37.25, o[3], d[3], sc;
+                    double w = ws[iw], hz = sqrt(1 - w * w);
+                    mist_hfog f = fog_make(base, dens[id], H, 1e-3, id == 2 ? 0 : 0.02);
+                    o[0] = 3; o[2] = -1;
+                    o[1] = H < INFINITY ? base + h0s[ih] * H : base + h0s[ih];
+                    if (flt && !(fabs(o[1]) <= FLT_MAX)) continue;
+                    /* a direction of length 1, 3.5 or 2^-30 */
+                    sc = id == 0 ? 1 : (id == 1 ? 3.5 : 0x1p-30);
+                    d[0] = sc * hz; d[1] = sc * w; d[2] = 0;
+                    for (ix = 0; ix < 8; ++ix)
+                        for (it = 0; it < 3; ++it) {
+                            double xi = xis[ix], tmax;
+                            int c = (ix + it) % 3;
+                            if (flt && xi < 1e-30) xi = 0x1p-100;
+                            tmax = it == 0 ? INFINITY : (it == 1 ? pow(10, 12 * mt_uniform(&rng) - 6) : DBL_MAX);
+                            if (flt && it == 2) tmax = FLT_MAX;
+                            one(&f, flt, o, d, tmax, c, xi, flt ? "exact float" : "exact double");
+                        }
+                }
+    printf("exact %s: %ld distances, worst %.3f of the bar (the reference's share of that bar "
+           "%.2g)\n", flt ? "float" : "double", n_checked - n0, worst_ratio, worst_ref);
+    mt_check(n_bad == bad0, "exact %s: %ld of %ld distances beyond the bar", flt ? "float" : "double",
+             n_bad - bad0, n_checked - n0);
+    if (before > worst_ratio) worst_ratio = before;
+}
+
+/* Random configurations: heights, slopes (log-uniform to 1e-15), scale
+ * heights, densities, extinctions, xi, tmax; and the same scenes rotated
+ * (an axis `up` that is any unit vector, the vectors rotated with it in
+ * long double and rounded). */
+static void test_random(int flt, int rotate, long n)
+{
+    mt_rng rng;
+    long i, bad0 = n_bad, n0 = n_checked;
+    double w0 = worst_ratio;
+    rng.s = 1234567 + 2 * (uint64_t)flt + (uint64_t)rotate;
+    worst_ratio = 0;
+    for (i = 0; i < n; ++i) {
+        double H = pow(10, -2 + 6 * mt_uniform(&rng)), base = 200 * (mt_uniform(&rng) - 0.5);
+        double h0 = (mt_uniform(&rng) < 0.5 ? -1 : 1) * pow(10, -3 + 5 * mt_uniform(&rng));
+        double w = (mt_uniform(&rng) < 0.5 ? -1 : 1)
+                 * pow(10, (mt_uniform(&rng) < 0.1 ? (flt ? -37 : -250) : -15) * mt_uniform(&rng));
+        double dn = pow(10, -6 + 8 * mt_uniform(&rng)), xi = mt_uniform(&rng);
+        double tmax = mt_uniform(&rng) < 0.4 ? INFINITY : pow(10, -3 + 8 * mt_uniform(&rng));
+        double o[3], d[3], y, hz;
+        mist_hfog f;
+        if (flt && fabs(h0) > 80) h0 = h0 > 0 ? 80 * mt_uniform(&rng) : -80 * mt_uniform(&rng);
+        f = fog_make(base, dn, H, pow(10, -5 + 3 * mt_uniform(&rng)), pow(10, -4 + 3 * mt_uniform(&rng)));
+        y = base + h0 * H;
+        hz = sqrt(1 - w * w);
+        o[0] = 1000 * (mt_uniform(&rng) - 0.5); o[1] = y; o[2] = 1000 * (mt_uniform(&rng) - 0.5);
+        d[0] = hz * cos(7 * mt_uniform(&rng)); d[2] = hz * sin(7 * mt_uniform(&rng)); d[1] = w;
+        if (rotate) {
+            /* a random rotation R (Rodrigues, long double): up = R e_y,
+             * o' = R o, d' = R d, rounded to the type */
+            LD ax[3], an = 7 * mt_uniform(&rng), nn, R[3][3], ca, sa, v[3];
+            double o2[3], d2[3];
+            int a, b;
+            ax[0] = mt_uniform(&rng) - 0.5; ax[1] = mt_uniform(&rng) - 0.5; ax[2] = mt_uniform(&rng) - 0.5;
+            nn = sqrtl(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+            for (a = 0; a < 3; ++a) ax[a] /= nn;
+            ca = cosl(an); sa = sinl(an);
+            for (a = 0; a < 3; ++a)
+                for (b = 0; b < 3; ++b) R[a][b] = (a == b ? ca : 0) + (1 - ca) * ax[a] * ax[b];
+            R[0][1] -= sa * ax[2]; R[0][2] += sa * ax[1]; R[1][0] += sa * ax[2];
+            R[1][2] -= sa * ax[0]; R[2][0] -= sa * ax[1]; R[2][1] += sa * ax[0];
+            for (a = 0; a < 3; ++a) {
+                v[a] = R[a][1];
+                o2[a] = (double)(R[a][0] * o[0] + R[a][1] * o[1] + R[a][2] * o[2]);
+                d2[a] = (double)(R[a][0] * d[0] + R[a][1] * d[1] + R[a][2] * d[2]);
+            }
+            f.up.x = (double)v[0]; f.up.y = (double)v[1]; f.up.z = (double)v[2];
+            if (flt) {   /* up unit to float's rounding (else it is normalised) */
+                f.up.x = (float)f.up.x; f.up.y = (float)f.up.y; f.up.z = (float)f.up.z;
+            }
+            memcpy(o, o2, sizeof o); memcpy(d, d2, sizeof d);
+        }
+        one(&f, flt, o, d, tmax, (int)(i % 3), xi, rotate ? "rotated" : "random");
+    }
+    printf("%s %s: %ld distances, worst %.3f of the bar\n", rotate ? "rotated" : "random",
+           flt ? "float" : "double", n_checked - n0, worst_ratio);
+    mt_check(n_bad == bad0, "%s %s: %ld of %ld distances beyond the bar", rotate ? "rotated" : "random",
+             flt ? "float" : "double", n_bad - bad0, n_checked - n0);
+    if (w0 > worst_ratio) worst_ratio = w0;
+}
+
+int main(int argc, char **argv)
+{
+    (void)argc; (void)argv;
+    test_exact(0);
+    test_exact(1);
+    test_random(0, 0, mt_scale(20000, 2000));
+    test_random(1, 0, mt_scale(20000, 2000));
+    test_random(0, 1, mt_scale(20000, 2000));
+    test_random(1, 1, mt_scale(20000, 2000));
+    return mt_done("test_hfog_path");
+}
