@@ -410,6 +410,377 @@ static void test_random(int flt, int rotate, long n)
     if (w0 > worst_ratio) worst_ratio = w0;
 }
 
+/* ------------------------------------------------------------------------ */
+/* Monotone in xi                                                           */
+/* ------------------------------------------------------------------------ */
+
+/* t(xi) non-decreasing (+inf above all) over sorted random xi and over
+ * runs of consecutive xi (nextafter) around: small, 1/2, near 1, the
+ * escape of an up ray, and the point where z = a K passes 2^-60 (the
+ * inversion's switch from z / a to log1p(z) / a). */
+static int cmp_dbl(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+static long mono_run(const mist_hfog *f, const mist_vec3 *o, const mist_vec3 *d, double tmax,
+                     const double *xs, long n)
+{
+    mist_hfogf g = fog_tof(f);
+    mist_vec3f of = { (float)o->x, (float)o->y, (float)o->z }, df = { (float)d->x, (float)d->y, (float)d->z };
+    double prev = -1;
+    float prevf = -1;
+    long i, bad = 0;
+    for (i = 0; i < n; ++i) {
+        double t = mist_hfog_sample_distance(f, *o, *d, tmax, 1, xs[i]);
+        float tf = mist_hfog_sample_distancef(&g, of, df, (float)tmax, 1, (float)xs[i]);
+        if (!(t >= prev)) ++bad;
+        if (!(tf >= prevf)) ++bad;
+        prev = t; prevf = tf;
+    }
+    return bad;
+}
+static void test_monotone(void)
+{
+    static double xs[40000];
+    const double ws[] = { 0, 1e-300, -1e-300, 1e-9, -1e-9, 0.2, -0.2, 1, -1 };
+    mt_rng rng;
+    long bad = 0, runs = 0, n, i;
+    size_t iw;
+    rng.s = 99;
+    for (iw = 0; iw < sizeof ws / sizeof *ws; ++iw) {
+        int ih;
+        for (ih = 0; ih < 3; ++ih) {
+            mist_hfog f = fog_make(5, 0.5, 300, 1e-3, 0.01);
+            mist_vec3 o = { 0, 5 + (ih - 1) * 3000.0, 0 }, d;
+            double w = ws[iw], s, xc[6];
+            int k;
+            d.x = sqrt(1 - w * w); d.y = w; d.z = 0;
+            for (i = 0; i < 20000; ++i) xs[i] = mt_uniform(&rng);
+            qsort(xs, 20000, sizeof *xs, cmp_dbl);
+            bad += mono_run(&f, &o, &d, INFINITY, xs, 20000);
+            bad += mono_run(&f, &o, &d, 5000, xs, 20000);
+            runs += 2;
+            /* centres of runs of consecutive xi: the switch z = 2^-60 and
+             * the escape z = 1 (up), in the fog's own terms */
+            s = 2e-3 * 0.5 * exp(-(o.y - 5) / 300);     /* st rho0 of channel 1 */
+            s += 0.01 * 0.5 * exp(-(o.y - 5) / 300);
+            xc[0] = 1e-12; xc[1] = 0.5; xc[2] = 1 - 1e-12;
+            xc[3] = w != 0 ? -expm1(-0x1p-60 * s * 300 / fabs(w)) : 0.25;
+            xc[4] = w > 0 ? -expm1(-s * 300 / w) : 0.75;
+            xc[5] = 0x1p-70;
+            for (k = 0; k < 6; ++k) {
+                double x = xc[k] * (1 - 1e-12);
+                if (!(x > 0 && x < 1)) continue;
+                for (n = 0; n < 4000; ++n) { xs[n] = x; x = nextafter(x, 1); }
+                bad += mono_run(&f, &o, &d, INFINITY, xs, 4000);
+                ++runs;
+            }
+        }
+    }
+    printf("monotone: %ld runs (double and float), %ld decreasing steps\n", runs, bad);
+    mt_check(bad == 0, "monotone: %ld decreasing steps", bad);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Chi-square: sampled distances against the density                       */
+/* ------------------------------------------------------------------------ */
+
+/* The density along the ray (double, for quadrature): sigma(t) =
+ * st d0 exp(-(y + w t - base) / H). */
+typedef struct { double st, d0, y, w, base, H; } chi_ray;
+static double chi_sigma(double t, const void *c)
+{
+    const chi_ray *r = (const chi_ray *)c;
+    return r->st * r->d0 * exp(-(r->y + r->w * t - r->base) / r->H);
+}
+/* tau(t) by adaptive Gauss-Kronrod (independent of every closed form) */
+static double chi_tau(const chi_ray *r, double t)
+{
+    double err, a = 0, sum = 0, step = r->w != 0 ? r->H / fabs(r->w) : t;
+    if (step > t) step = t;
+    while (a < t) {                /* pieces of a scale height: smooth integrands */
+        double b = a + step < t ? a + step : t;
+        double s0 = chi_sigma(a, r), s1 = chi_sigma(b, r);
+        sum += mt_integrate(chi_sigma, r, a, b, 1e-13 * (s0 > s1 ? s0 : s1) * (b - a), &err);
+        a = b;
+        if (sum > 60) return sum;
+    }
+    return sum;
+}
+/* edges t_j with P(t < t_j) = j/K of the collision probability P(tmax)
+ * (bisection on the quadrature's CDF); returns P(tmax) */
+static double chi_edges(const chi_ray *r, double tmax, double *edge, int K)
+{
+    double tend = tmax, P, hi;
+    int j, it;
+    if (!(tmax < INFINITY)) tend = r->w > 0 ? 60 * r->H / r->w : 1e7;
+    P = -expm1(-chi_tau(r, tend));
+    hi = tend;
+    for (j = 1; j < K; ++j) {
+        double lo = 0, h = hi, target = P * j / K;
+        for (it = 0; it < 60; ++it) {
+            double m = 0.5 * (lo + h);
+            if (-expm1(-chi_tau(r, m)) < target) lo = m; else h = m;
+        }
+        edge[j] = 0.5 * (lo + h);
+    }
+    edge[0] = 0; edge[K] = tmax;
+    return P;
+}
+/* counts of t in the K cells and the "no collision" cell K */
+static void chi_count(const double *t, long n, const double *edge, int K, double *obs)
+{
+    long i;
+    int j;
+    for (j = 0; j <= K; ++j) obs[j] = 0;
+    for (i = 0; i < n; ++i) {
+        int lo = 0, hi = K;
+        if (!(t[i] <= edge[K]) || t[i] == INFINITY) { obs[K] += 1; continue; }
+        while (hi - lo > 1) { int m = (lo + hi) / 2; if (t[i] < edge[m]) hi = m; else lo = m; }
+        obs[lo] += 1;
+    }
+}
+static void test_chi2(void)
+{
+    enum { K = 40 };
+    /* rays: down from above the base to tmax, up and escaping (tmax inf),
+     * level, nearly level down to infinity, uniform fog */
+    const double ys[] = { 400, -50, 10, 300, 0 }, ws[] = { -0.6, 0.5, 0, -1e-3, 0.3 };
+    const double tms[] = { 2000, INFINITY, 500, INFINITY, 300 };
+    const double Hs[] = { 150, 150, 150, 150, INFINITY };
+    static double t[200000], tb[200000];
+    long n = mt_scale(200000, 20000), i;
+    int c, k, dof, nk = 5;
+    double alpha = mt_sidak(1e-3, 2 * nk);
+    mt_rng rng;
+    rng.s = 4242;
+    for (k = 0; k < nk; ++k) {
+        for (c = 0; c < 2; ++c) {     /* double, float */
+            mist_hfog f = fog_make(0, 1.0, Hs[k], 2e-4, 2e-3);
+            mist_hfogf g = fog_tof(&f);
+            mist_vec3 o = { 1, ys[k], 2 }, d;
+            mist_vec3f of, df;
+            chi_ray r;
+            double edge[K + 1], obs[K + 1], ex[K + 1], P, p, pb, pc;
+            int j;
+            d.x = sqrt(1 - ws[k] * ws[k]); d.y = ws[k]; d.z = 0;
+            of.x = (float)o.x; of.y = (float)o.y; of.z = (float)o.z;
+            df.x = (float)d.x; df.y = (float)d.y; df.z = (float)d.z;
+            r.st = 4e-4 + 2e-3; r.d0 = 1; r.y = o.y; r.w = d.y; r.base = 0;
+            r.H = Hs[k] < INFINITY ? Hs[k] : 1e300;
+            P = chi_edges(&r, tms[k], edge, K);
+            for (j = 0; j < K; ++j) ex[j] = (double)n * P / K;
+            ex[K] = (double)n * (1 - P);
+            for (i = 0; i < n; ++i) {
+                double xi = mt_uniform(&rng);
+                t[i] = c ? (double)mist_hfog_sample_distancef(&g, of, df, (float)tms[k], 1, (float)xi)
+                         : mist_hfog_sample_distance(&f, o, d, tms[k], 1, xi);
+                /* control (b): the density at the start taken as constant */
+                tb[i] = -log1p(-xi) / (r.st * exp(-(o.y - 0) / r.H));
+                if (tb[i] > tms[k]) tb[i] = INFINITY;
+            }
+            chi_count(t, n, edge, K, obs);
+            p = mt_chi2(obs, ex, K + 1, &dof);
+            mt_check(p > alpha, "chi2 %s ray %d: p = %.3g (alpha %.3g)", c ? "float" : "double", k, p, alpha);
+            /* control (a): against a fog of 3% larger scale height (uniform:
+             * 3% more extinction) */
+            {
+                chi_ray r2 = r;
+                double e2[K + 1], P2;
+                if (Hs[k] < INFINITY && ws[k] != 0) r2.H *= 1.03; else r2.st *= 1.03;
+                P2 = chi_edges(&r2, tms[k], e2, K);
+                for (j = 0; j < K; ++j) ex[j] = (double)n * P2 / K;
+                ex[K] = (double)n * (1 - P2);
+                chi_count(t, n, e2, K, obs);
+                pc = mt_chi2(obs, ex, K + 1, &dof);
+                for (j = 0; j < K; ++j) ex[j] = (double)n * P / K;
+                ex[K] = (double)n * (1 - P);
+            }
+            chi_count(tb, n, edge, K, obs);
+            pb = mt_chi2(obs, ex, K + 1, &dof);
+            printf("chi2 %s ray %d (y %g, w %g, tmax %g): p = %.3g; controls: H x 1.03 p = %.3g, "
+                   "constant density p = %.3g\n", c ? "float" : "double", k, ys[k], ws[k], tms[k], p,
+                   pc, pb);
+            mt_check(pc < alpha, "chi2 control (H x 1.03) ray %d not rejected: p = %.3g", k, pc);
+            if (k != 4 && k != 2)   /* (uniform fog, level ray: the constant density is right) */
+                mt_check(pb < alpha, "chi2 control (constant density) ray %d not rejected: p = %.3g", k, pb);
+        }
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Optical depth and extinction                                             */
+/* ------------------------------------------------------------------------ */
+
+/* optical_depth against exp(ln tau) of the reference, and extinction
+ * against st d0 e^-h0 (long double), over the random scenes of
+ * test_random (y axis and rotated).  The bar: 6 eps relative (the
+ * column's few ulps [section comment] and the product with st), plus the
+ * reference's rounding. */
+static void test_depth(int flt, int rotate, long n)
+{
+    mt_rng rng;
+    long i, bad = 0, nd = 0;
+    double worst = 0, worste = 0;
+    LD eps = flt ? 0x1p-24L : 0x1p-53L;
+    rng.s = 555 + 2 * (uint64_t)flt + (uint64_t)rotate;
+    for (i = 0; i < n; ++i) {
+        double H = pow(10, -2 + 6 * mt_uniform(&rng)), base = 200 * (mt_uniform(&rng) - 0.5);
+        double h0 = (mt_uniform(&rng) < 0.5 ? -1 : 1) * pow(10, -3 + (flt ? 1.9 : 2.8) * mt_uniform(&rng));
+        double w = (mt_uniform(&rng) < 0.5 ? -1 : 1) * pow(10, -15 * mt_uniform(&rng));
+        double s = mt_uniform(&rng) < 0.2 ? INFINITY : pow(10, -3 + 8 * mt_uniform(&rng));
+        double o[3], d[3], hz = sqrt(1 - w * w);
+        mist_hfog f = fog_make(base, pow(10, -3 + 4 * mt_uniform(&rng)), H, 1e-4, 1e-3);
+        int c = (int)(i % 3), k;
+        LD ol[3], dl[3], ul[3], ref, got, lt, ref_e, got_e, bar;
+        rray r;
+        o[0] = 100 * (mt_uniform(&rng) - 0.5); o[1] = base + h0 * H; o[2] = 100 * mt_uniform(&rng);
+        d[0] = hz * cos(2.0 * i); d[1] = w; d[2] = hz * sin(2.0 * i);
+        if (rotate) {
+            double an = 0.3 + i * 1e-3, ca = cos(an), sa = sin(an), t0 = o[1], t1 = d[1];
+            /* a rotation about z by an: up = (-sin, cos, 0) */
+            o[1] = ca * t0 + sa * o[0]; o[0] = ca * o[0] - sa * t0;
+            d[1] = ca * t1 + sa * d[0]; d[0] = ca * d[0] - sa * t1;
+            f.up.x = -sa; f.up.y = ca; f.up.z = 0;
+        }
+        f = fog_round(&f, flt);
+        if (flt) {
+            mist_hfogf g = fog_tof(&f);
+            mist_vec3f of = { (float)o[0], (float)o[1], (float)o[2] }, df = { (float)d[0], (float)d[1], (float)d[2] };
+            mist_rgbf tf = mist_hfog_optical_depthf(&g, of, df, (float)s);
+            mist_rgbf ef = mist_hfog_extinctionf(&g, of);
+            got = c == 0 ? tf.r : c == 1 ? tf.g : tf.b;
+            got_e = c == 0 ? ef.r : c == 1 ? ef.g : ef.b;
+            ol[0] = of.x; ol[1] = of.y; ol[2] = of.z; dl[0] = df.x; dl[1] = df.y; dl[2] = df.z;
+            s = (float)s;
+        } else {
+            mist_vec3 od = { o[0], o[1], o[2] }, dd = { d[0], d[1], d[2] };
+            mist_rgb td = mist_hfog_optical_depth(&f, od, dd, s), ed = mist_hfog_extinction(&f, od);
+            got = c == 0 ? td.r : c == 1 ? td.g : td.b;
+            got_e = c == 0 ? ed.r : c == 1 ? ed.g : ed.b;
+            for (k = 0; k < 3; ++k) { ol[k] = o[k]; dl[k] = d[k]; }
+        }
+        ul[0] = f.up.x; ul[1] = f.up.y; ul[2] = f.up.z;
+        r = ref_ray(&f, c, ol, dl, rotate ? ul : NULL, eps);
+        if (s < INFINITY) lt = ln_tau(&r, s);
+        else lt = r.a > 0 ? ln_tau_inf(&r) : INFINITY;
+        ref = expl(lt);
+        ref_e = expl(r.lc0 - r.h0);
+        if (ref >= (flt ? FLT_MIN / eps : DBL_MIN / eps) && ref <= (flt ? FLT_MAX : DBL_MAX)) {
+            LD e = fabsld(got - ref) / ref;
+            bar = 6 * eps + REF_ERR(r.M + fabsld(lt) + (s < INFINITY ? fabsld(r.a * s) : 0));
+            /* along a rotated axis the slope w = dir . up is rounded once
+             * (relative error <= eps): the depth's exponent w s / H then
+             * carries |w s / H| eps (see the section comment, THE HEIGHT AXIS) */
+            if (rotate) bar += eps * (1 + (s < INFINITY ? fabsld(r.a * s) : 0));
+            ++nd;
+            if (e / bar > worst) worst = (double)(e / bar);
+            if (e > bar) {
+                if (bad < 3)
+                    printf("  depth: got %.17Lg ref %.20Lg (o %a %a %a d %a %a %a up %a %a %a s %a H %a base %a h0 %Lg a %Lg)\n",
+                           got, ref, o[0], o[1], o[2], d[0], d[1], d[2], f.up.x, f.up.y, f.up.z, s,
+                           f.scale_height, f.base, r.h0, r.a);
+                ++bad;
+            }
+        } else if (ref == INFINITY && got != INFINITY) ++bad;
+        if (ref_e >= (flt ? FLT_MIN / eps : DBL_MIN / eps) && ref_e <= (flt ? FLT_MAX : DBL_MAX)) {
+            LD e = fabsld(got_e - ref_e) / ref_e;
+            bar = 4 * eps + REF_ERR(r.M);
+            if (e / bar > worste) worste = (double)(e / bar);
+            if (e > bar) { if (bad < 5) printf("  extinction: got %.17Lg ref %.20Lg\n", got_e, ref_e); ++bad; }
+        }
+        if (got != got || got_e != got_e) ++bad;
+    }
+    printf("depth %s%s: %ld optical depths, worst %.3f of the bar (6 eps%s); extinction worst %.3f "
+           "of the bar (4 eps)\n", flt ? "float" : "double", rotate ? " rotated" : "", nd, worst,
+           rotate ? " + (1 + |w s/H|) eps" : "", worste);
+    mt_check(bad == 0, "depth %s%s: %ld beyond the bar", flt ? "float" : "double", rotate ? " rotated" : "", bad);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Bad input                                                                */
+/* ------------------------------------------------------------------------ */
+
+static int rgb_is(mist_rgb a, double v) { return a.r == v && a.g == v && a.b == v; }
+static void test_bad(void)
+{
+    mist_hfog f = fog_make(0, 1, 100, 1e-3, 1e-2), g;
+    mist_vec3 o = { 0, 10, 0 }, d = { 0.6, 0.8, 0 }, z = { 0, 0, 0 }, nanv = { NAN, 0, 0 };
+    mist_vec3 io = { 0, INFINITY, 0 };
+    double t;
+    int ok = 1, c;
+    mist_hfogf ff = fog_tof(&f);
+    mist_vec3f of = { 0, 10, 0 }, df = { 0.6f, 0.8f, 0 };
+    /* no fog: +inf (no collision), depth and extinction 0 */
+    ok &= mist_hfog_sample_distance(NULL, o, d, 10, 0, 0.5) == INFINITY;
+    ok &= rgb_is(mist_hfog_optical_depth(NULL, o, d, 10), 0) && rgb_is(mist_hfog_extinction(NULL, o), 0);
+    ok &= mist_hfog_sample_distance(&f, o, d, 10, -1, 0.5) == INFINITY;
+    ok &= mist_hfog_sample_distance(&f, o, d, 10, 3, 0.5) == INFINITY;
+    g = f; g.density = 0;
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_optical_depth(&g, o, d, 10), 0);
+    g = f; g.density = NAN;
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_extinction(&g, o), 0);
+    g = f; g.scale_height = -1;
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_optical_depth(&g, o, d, 10), 0);
+    g = f; g.scale_height = NAN;
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_extinction(&g, o), 0);
+    g = f; g.base = INFINITY;
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_extinction(&g, o), 0);
+    g = f; memset(&g.rayleigh_scat, 0, 4 * sizeof g.rayleigh_scat);   /* no extinction */
+    ok &= mist_hfog_sample_distance(&g, o, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_extinction(&g, o), 0);
+    ok &= mist_hfog_sample_distance(&f, io, d, 10, 0, 0.5) == INFINITY && rgb_is(mist_hfog_extinction(&f, io), 0);
+    ok &= rgb_is(mist_hfog_optical_depth(&f, io, d, 10), 0);
+    mt_check(ok, "bad input: no fog gives +inf distances, 0 depth and extinction");
+    /* xi: NaN and <= 0 give 0, >= 1 (inf too) +inf; tmax NaN or <= 0 +inf */
+    ok = mist_hfog_sample_distance(&f, o, d, 10, 0, NAN) == 0 && mist_hfog_sample_distance(&f, o, d, 10, 0, -1) == 0
+      && mist_hfog_sample_distance(&f, o, d, 10, 0, 0) == 0 && mist_hfog_sample_distance(&f, o, d, INFINITY, 0, 1) == INFINITY
+      && mist_hfog_sample_distance(&f, o, d, INFINITY, 0, INFINITY) == INFINITY
+      && mist_hfog_sample_distance(&f, o, d, NAN, 0, 0.5) == INFINITY
+      && mist_hfog_sample_distance(&f, o, d, -3, 0, 0.5) == INFINITY
+      && mist_hfog_sample_distance(&f, o, d, 0, 0, 0.5) == INFINITY
+      && mist_hfog_sample_distancef(&ff, of, df, 10, 0, NAN) == 0
+      && mist_hfog_sample_distancef(&ff, of, df, INFINITY, 0, 1) == INFINITY;
+    mt_check(ok, "bad input: xi NaN, <= 0: 0; xi >= 1: +inf; tmax NaN, <= 0: +inf");
+    /* t of the depth NaN, <= 0: 0; +inf allowed */
+    ok = rgb_is(mist_hfog_optical_depth(&f, o, d, NAN), 0) && rgb_is(mist_hfog_optical_depth(&f, o, d, -1), 0);
+    {
+        mist_vec3 dn = { 0, -1, 0 };
+        mist_rgb a = mist_hfog_optical_depth(&f, o, dn, INFINITY);
+        ok &= a.r == INFINITY && a.g == INFINITY && a.b == INFINITY;
+    }
+    mt_check(ok, "bad input: depth to t NaN or <= 0 is 0; down to infinity +inf");
+    /* a zero, NaN or infinite direction: (0, 0, 1), level (as mist_hfog_eval) */
+    for (c = 0; c < 3; ++c) {
+        mist_vec3 lv = { 0, 0, 1 };
+        t = mist_hfog_sample_distance(&f, o, z, INFINITY, c, 0.3);
+        ok = t == mist_hfog_sample_distance(&f, o, lv, INFINITY, c, 0.3);
+        t = mist_hfog_sample_distance(&f, o, nanv, INFINITY, c, 0.3);
+        ok &= t == mist_hfog_sample_distance(&f, o, lv, INFINITY, c, 0.3);
+        mt_check(ok, "bad input: a zero or NaN direction is (0, 0, 1), channel %d", c);
+    }
+    /* never NaN over a grid of bad and extreme values */
+    {
+        const double v[] = { 0, -0.0, 1e-320, -1, 1, 1e300, INFINITY, -INFINITY, NAN };
+        int i, j, k2, nan_seen = 0;
+        for (i = 0; i < 9; ++i)
+            for (j = 0; j < 9; ++j)
+                for (k2 = 0; k2 < 9; ++k2) {
+                    mist_hfog h = f;
+                    mist_vec3 oo = { v[i], v[j], 1 }, dd = { 1, v[k2], v[i] };
+                    mist_rgb a, e;
+                    h.density = v[j] == 0 ? 1 : fabs(v[j]); h.scale_height = v[k2]; h.base = v[i];
+                    h.up.x = v[k2]; h.up.y = v[j];
+                    a = mist_hfog_optical_depth(&h, oo, dd, v[k2]);
+                    e = mist_hfog_extinction(&h, oo);
+                    t = mist_hfog_sample_distance(&h, oo, dd, v[j], k2 % 3, fabs(v[i]) < 1 ? 0.5 : v[i]);
+                    nan_seen += t != t || !(t >= 0) || a.r != a.r || a.g != a.g || a.b != a.b
+                             || e.r != e.r || e.g != e.g || e.b != e.b;
+                }
+        mt_check(nan_seen == 0, "bad input: %d NaN or negative results over the grid", nan_seen);
+    }
+}
+
 int main(int argc, char **argv)
 {
     (void)argc; (void)argv;
@@ -419,5 +790,12 @@ int main(int argc, char **argv)
     test_random(1, 0, mt_scale(20000, 2000));
     test_random(0, 1, mt_scale(20000, 2000));
     test_random(1, 1, mt_scale(20000, 2000));
+    test_monotone();
+    test_chi2();
+    test_depth(0, 0, mt_scale(20000, 2000));
+    test_depth(1, 0, mt_scale(20000, 2000));
+    test_depth(0, 1, mt_scale(20000, 2000));
+    test_depth(1, 1, mt_scale(20000, 2000));
+    test_bad();
     return mt_done("test_hfog_path");
 }
