@@ -5344,6 +5344,29 @@ MIST__F MIST__T MIST__FN(mist__impl_hfog_sample_distance)(const MIST__HFOG *fog,
     H = fog->scale_height;
     if (H <= MIST__BIG) hh = MIST__FN(mist__hquot)(y, yb, H, &hl);
     else w = MIST__C(0);                             /* uniform: as level */
+    {   /* the common case, every intermediate normal: the same steps as
+         * below in plain arithmetic (the scaled products' results agree
+         * to rounding) */
+        const MIST__T tmin = MIST__TMIN;
+        MIST__T c = st * MIST__FN(mist__pos)(fog->density), aw = w < MIST__C(0) ? -w : w, a, z;
+        if (hh < MIST__XLIM && hh > -MIST__XLIM && sx == 0 && c >= tmin && c <= MIST__BIG) {
+            MIST__T p = T * (MIST__M(exp)(hh) * (MIST__C(1) + hl));
+            mK = p / c;
+            if (p >= tmin && p <= MIST__BIG && mK >= tmin && mK <= MIST__BIG) {
+                if (w == MIST__C(0)) return mK <= tmax ? mK : (MIST__T)INFINITY;
+                a = aw / H;
+                z = mK * a;
+                if (a >= tmin && a <= MIST__BIG && z >= tmin && z <= MIST__BIG) {
+                    if (z < MIST__C(0x1p-60)) t = z / a;
+                    else if (w > MIST__C(0)) {
+                        if (!(z < MIST__C(1))) return (MIST__T)INFINITY;
+                        t = -MIST__M(log1p)(-z) / a;
+                    } else t = MIST__M(log1p)(z) / a;
+                    return t <= tmax ? t : (MIST__T)INFINITY;
+                }
+            }
+        }
+    }
     /* K = T e^h / (st density) = mK 2^kK: the distance at the start's
      * density, one scaled product (nothing leaves the range before it) */
     q = MIST__FN(mist__frexp)(st, &ks) * MIST__FN(mist__frexp)(MIST__FN(mist__pos)(fog->density), &kd);
