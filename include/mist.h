@@ -5258,6 +5258,15 @@ MIST__F MIST__T MIST__FN(mist__hquot)(MIST__T y, MIST__T yb, MIST__T H, MIST__T 
     const MIST__T up = MIST__C(1) / (MIST__EPS * MIST__EPS);
     MIST__T n, ne, q;
     n = MIST__FN(mist__two_sum)(y, -yb, &ne);
+    if (H >= MIST__TMIN * up && H <= MIST__BIG && MIST__FN(mist__finite)(n)) {
+        /* one division: q = n (1/H) within 2 ulps, the remainder exact
+         * (two_prod; n - p by Sterbenz), so hi + lo is as exact */
+        MIST__T ih = MIST__C(1) / H, p, pe;
+        q = n * ih;
+        p = MIST__FN(mist__two_prod)(q, H, &pe);
+        *lo = (((n - p) - pe) + ne) * ih;
+        if (MIST__FN(mist__finite)(q) && MIST__FN(mist__finite)(*lo)) return q;
+    }
     if (H < MIST__TMIN * up) { n *= up; ne *= up; H *= up; }
     *lo = MIST__C(0);
     if (!(MIST__FN(mist__finite)(n) && MIST__FN(mist__finite)(ne)))
