@@ -1002,12 +1002,11 @@ static pt_est pt_run(const mist_hfog *f, mist_vec3 o, mist_vec3 d, double s, int
             }
             /* the ambient: one direction from the phase function chosen
              * by the scatterings (Rayleigh or Mie), weight p / pdf */
-            if (mt_uniform(rng) * (sR + sM) < sR) {
-                wo = mist_phase_sample_dir(&pr, dn, mt_uniform(rng), mt_uniform(rng), &pdf);
-                wgt = mist_phase_eval(&pr, wo.x * dn.x + wo.y * dn.y + wo.z * dn.z) / pdf;
-            } else {
-                wo = mist_phase_sample_dir(&pm, dn, mt_uniform(rng), mt_uniform(rng), &pdf);
-                wgt = mist_phase_eval(&pm, wo.x * dn.x + wo.y * dn.y + wo.z * dn.z) / pdf;
+            {
+                const mist_phase *ph = mt_uniform(rng) * (sR + sM) < sR ? &pr : &pm;
+                double x1 = mt_uniform(rng), x2 = mt_uniform(rng);
+                wo = mist_phase_sample_dir(ph, dn, x1, x2, &pdf);
+                wgt = mist_phase_eval(ph, wo.x * dn.x + wo.y * dn.y + wo.z * dn.z) / pdf;
             }
             v = (rho * (sR * pR + sM * pM) * E * Ts + ss * La * wgt) / st;
         }
