@@ -5140,11 +5140,10 @@ MIST__F void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
 {
 #ifndef MIST_NO_TAB
     if (fog->mie_tab) {
-        int c;
-        if (fog->mie_tab->channels == 3)
+        int c;     /* (a table not built: isotropic, as mist_tab_eval) */
+        p[0] = p[1] = p[2] = MIST__FN(mist__impl_tab_eval)(fog->mie_tab, u, MIST__NULL);
+        if (fog->mie_tab->channels == 3 && MIST__FN(mist__tab_ok)(fog->mie_tab))
             (void)MIST__FN(mist__impl_tab_eval)(fog->mie_tab, u, p);
-        else
-            p[0] = p[1] = p[2] = MIST__FN(mist__impl_tab_eval)(fog->mie_tab, u, MIST__NULL);
         for (c = 0; c < 3; ++c) p[c] = MIST__FN(mist__pos)(p[c]);
         return;
     }
@@ -5417,7 +5416,8 @@ MIST__F MIST__T MIST__FN(mist__impl_hfog_sample_distance)(const MIST__HFOG *fog,
                 a = aw / H;
                 z = mK * a;
                 if (a >= tmin && a <= MIST__BIG && z >= tmin && z <= MIST__BIG) {
-                    if (z < MIST__C(0x1p-60)) t = z / a;
+                    if (z < MIST__C(8.6736173798840354720596224069595336914e-19))   /* 2^-60 */
+                        t = z / a;
                     else if (w > MIST__C(0)) {
                         if (!(z < MIST__C(1))) return (MIST__T)INFINITY;
                         t = -MIST__M(log1p)(-z) / a;

@@ -759,6 +759,23 @@ static void test_bad(void)
         ok &= t == mist_hfog_sample_distance(&f, o, lv, INFINITY, c, 0.3);
         mt_check(ok, "bad input: a zero or NaN direction is (0, 0, 1), channel %d", c);
     }
+    /* a Mie table not built (zeroed; or its init failed): isotropic, as
+     * mist_tab_eval; a NULL one: mie_phase */
+    {
+        mist_tab zt;
+        mist_hfog h = f;
+        mist_phase iso = mist_phase_hg(0);
+        mist_rgb a, b;
+        memset(&zt, 0, sizeof zt);
+        zt.channels = 3;
+        h.sun_dir.x = 0.3; h.sun_dir.y = 0.5; h.sun_dir.z = 0.2; h.sun.r = h.sun.g = h.sun.b = 1;
+        h.mie_tab = &zt;
+        a = mist_hfog_inscatter(&h, o, d, 100);
+        h.mie_tab = NULL; h.mie_prepared = &iso;
+        b = mist_hfog_inscatter(&h, o, d, 100);
+        mt_check(fabs(a.r - b.r) <= 1e-14 * b.r && fabs(a.b - b.b) <= 1e-14 * b.b,
+                 "bad input: a Mie table not built is isotropic (%.17g, %.17g)", a.r, b.r);
+    }
     /* never NaN over a grid of bad and extreme values */
     {
         const double v[] = { 0, -0.0, 1e-320, -1, 1, 1e300, INFINITY, -INFINITY, NAN };
