@@ -952,16 +952,28 @@ static double c_col(void)  LOOP(double, mist_hfog_column(hfd, ray_od[i].y, ray_d
     T a_ = 1 - D.y * -LOG(1 - X) * EXP((O.y - F[0].base) / H_) / (H_ * st_), t_;      \
     t_ = a_ > 0 ? -H_ / D.y * LOG(a_) : (T)INFINITY;                                   \
     v_ = t_ <= S ? t_ : (T)INFINITY; }
-static float sd_printedf(int i) { float v_; SD_PRINTED(float, expf, logf, hff, ray_of[i], ray_df[i], ray_sf[i], xf[(i * 17 + 1) % N]) return v_; }
-static double sd_printed(int i) { double v_; SD_PRINTED(double, exp, log, hfd, ray_od[i], ray_dd[i], ray_sd[i], xd[(i * 17 + 1) % N]) return v_; }
+static float sd_printedf(int i)
+{
+    float v_;
+    SD_PRINTED(float, expf, logf, hff, ray_of[i], ray_df[i], ray_sf[i], xf[(i * 17 + 1) % N])
+    return v_;
+}
+static double sd_printed(int i)
+{
+    double v_;
+    SD_PRINTED(double, exp, log, hfd, ray_od[i], ray_dd[i], ray_sd[i], xd[(i * 17 + 1) % N])
+    return v_;
+}
 static double c_sd_printedf(void) LOOP(float, sd_printedf(i))
 static double c_sd_printed(void)  LOOP(double, sd_printed(i))
-static double c_sdf(void) LOOP(float, mist_hfog_sample_distancef(hff, ray_of[i], ray_df[i], ray_sf[i], 1,
-                                                                xf[(i * 17 + 1) % N]))
-static double c_sd(void)  LOOP(double, mist_hfog_sample_distance(hfd, ray_od[i], ray_dd[i], ray_sd[i], 1,
-                                                                xd[(i * 17 + 1) % N]))
-static double c_odf(void) RGBLOOP(float, mist_rgbf, mist_hfog_optical_depthf(hff, ray_of[i], ray_df[i], ray_sf[i]))
-static double c_od(void)  RGBLOOP(double, mist_rgb, mist_hfog_optical_depth(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
+static double c_sdf(void) LOOP(float, mist_hfog_sample_distancef(hff, ray_of[i], ray_df[i],
+                                                                ray_sf[i], 1, xf[(i * 17 + 1) % N]))
+static double c_sd(void)  LOOP(double, mist_hfog_sample_distance(hfd, ray_od[i], ray_dd[i],
+                                                                ray_sd[i], 1, xd[(i * 17 + 1) % N]))
+static double c_odf(void) RGBLOOP(float, mist_rgbf,
+                                  mist_hfog_optical_depthf(hff, ray_of[i], ray_df[i], ray_sf[i]))
+static double c_od(void)  RGBLOOP(double, mist_rgb,
+                                  mist_hfog_optical_depth(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
 static void sd_rows(void)
 {
     printf("free-flight distances (one channel, xi uniform, tmax the ray's length):\n");

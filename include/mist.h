@@ -5446,7 +5446,8 @@ MIST__F MIST__T MIST__FN(mist__impl_hfog_sample_distance)(const MIST__HFOG *fog,
     }
     /* K = T e^h / (st density) = mK 2^kK: the distance at the start's
      * density, one scaled product (nothing leaves the range before it) */
-    q = MIST__FN(mist__frexp)(st, &ks) * MIST__FN(mist__frexp)(MIST__FN(mist__pos)(fog->density), &kd);
+    q = MIST__FN(mist__frexp)(st, &ks)
+      * MIST__FN(mist__frexp)(MIST__FN(mist__pos)(fog->density), &kd);
     mK = MIST__FN(mist__expmul_s)(T, MIST__C(1), MIST__C(1), MIST__C(1), q, -hh, -hl,
                                   -(ks + kd + sx), &kK);
     if (mK == MIST__C(0)) return MIST__C(0);         /* K < e^(-64 XLIM): t rounds to 0 */
