@@ -1117,6 +1117,70 @@ static void test_log1pf(void)
     mt_check(ctl == nctl, "float log1p control: a result 2^-22 off passed %ld of %ld times", nctl - ctl, nctl);
 }
 
+/* Wild input, double and float: every field of the fog, the ray, the axis,
+ * tmax and xi from edge values (+-0, subnormals, 1, huge, +-inf, NaN) or
+ * raw bit patterns.  Invariants: no NaN anywhere; a distance in [0, tmax]
+ * or +inf, non-decreasing over eight sorted xi; depths and extinctions
+ * >= 0. */
+static double wild_d(mt_rng *r)
+{
+    static const double e[] = { 0, -0.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, 1, -1, 0.5, 1e-300,
+                                1e300, -1e300, DBL_MAX, -DBL_MAX, INFINITY, -INFINITY, NAN, 3, 100 };
+    uint64_t b = mt_next(r);
+    double x;
+    if (b % 3 == 0) return e[(b >> 8) % (sizeof e / sizeof *e)];
+    if (b % 3 == 1) { b = mt_next(r); memcpy(&x, &b, sizeof x); return x; }
+    return ldexp(mt_uniform(r) - 0.5, (int)((b >> 8) % 200) - 100);
+}
+#define WILD_CHECK(T, S, HF, V3, RGB)                                                      \
+static long wild_##S(long n)                                                               \
+{                                                                                          \
+    mt_rng r;                                                                              \
+    long i, bad = 0;                                                                       \
+    r.s = 2718 + sizeof(T);                                                                \
+    for (i = 0; i < n; ++i) {                                                              \
+        HF f;                                                                              \
+        V3 o, d, p;                                                                        \
+        T tmax, xs[8], prev = 0;                                                           \
+        RGB a, e;                                                                          \
+        int k, c = (int)(mt_next(&r) % 5) - 1;                                             \
+        memset(&f, 0, sizeof f);                                                           \
+        f.base = (T)wild_d(&r); f.density = (T)wild_d(&r); f.scale_height = (T)wild_d(&r);   \
+        f.rayleigh_scat.r = (T)wild_d(&r); f.rayleigh_scat.g = (T)wild_d(&r);               \
+        f.rayleigh_ext.g = (T)wild_d(&r); f.mie_scat.b = (T)wild_d(&r);                     \
+        f.mie_ext.r = (T)wild_d(&r); f.mie_ext.g = (T)wild_d(&r); f.mie_ext.b = (T)wild_d(&r); \
+        if (mt_next(&r) % 2) { f.up.x = (T)wild_d(&r); f.up.y = (T)wild_d(&r); f.up.z = (T)wild_d(&r); } \
+        o.x = (T)wild_d(&r); o.y = (T)wild_d(&r); o.z = (T)wild_d(&r);                     \
+        d.x = (T)wild_d(&r); d.y = (T)wild_d(&r); d.z = (T)wild_d(&r);                     \
+        tmax = (T)wild_d(&r);                                                              \
+        for (k = 0; k < 8; ++k) xs[k] = (T)(k == 0 ? wild_d(&r) : mt_uniform(&r));         \
+        for (k = 2; k < 8; ++k) {    /* sorted (from the second: the first is wild) */    \
+            int j = k;                                                                     \
+            while (j > 1 && xs[j - 1] > xs[j]) { T t_ = xs[j]; xs[j] = xs[j - 1]; xs[j - 1] = t_; --j; } \
+        }                                                                                  \
+        for (k = 0; k < 8; ++k) {                                                          \
+            T t = mist_hfog_sample_distance##S(&f, o, d, tmax, c, xs[k]);                   \
+            bad += t != t || t < 0 || (t != (T)INFINITY && !(t <= tmax));                  \
+            if (k > 1) bad += !(t >= prev);                                                \
+            prev = t;                                                                      \
+        }                                                                                  \
+        a = mist_hfog_optical_depth##S(&f, o, d, tmax);                                     \
+        p = o; p.y = (T)wild_d(&r);                                                        \
+        e = mist_hfog_extinction##S(&f, p);                                                \
+        bad += !(a.r >= 0) || !(a.g >= 0) || !(a.b >= 0) || !(e.r >= 0) || !(e.g >= 0) || !(e.b >= 0); \
+    }                                                                                      \
+    return bad;                                                                            \
+}
+WILD_CHECK(double, , mist_hfog, mist_vec3, mist_rgb)
+WILD_CHECK(float, f, mist_hfogf, mist_vec3f, mist_rgbf)
+static void test_wild(void)
+{
+    long n = mt_scale(200000, 20000), bd = wild_(n), bf = wild_f(n);
+    printf("wild input: %ld fogs and rays a type, %ld (double) and %ld (float) broken invariants\n",
+           n, bd, bf);
+    mt_check(bd == 0 && bf == 0, "wild input: %ld and %ld broken invariants", bd, bf);
+}
+
 int main(int argc, char **argv)
 {
     (void)argc; (void)argv;
@@ -1137,5 +1201,6 @@ int main(int argc, char **argv)
     test_zup();
     test_pt();
     test_log1pf();
+    test_wild();
     return mt_done("test_hfog_path");
 }
