@@ -165,11 +165,11 @@ static double check_t(const rray *r, double xi, double tmax, double got, int flt
     if (ts > tmaxl || !(ts < INFINITY)) {
         /* no root in [0, tmax]: +inf, or (within the bar) tmax itself */
         if (got == INFINITY) return 0;
-        if (ts < INFINITY) {
-            ts = ts;       /* the root lies beyond tmax: got may be at most tmax */
-        } else {
-            /* no root at all (an up ray that escapes): lnT within the
-             * rounding of ln tau(inf), 8 eps, of the edge is fair */
+        /* a root beyond tmax: a finite t is checked against it below (it
+         * may be tmax itself, within the bar).  No root at all (an up ray
+         * that escapes): lnT within the rounding of ln tau(inf), 8 eps,
+         * of the edge is fair */
+        if (!(ts < INFINITY)) {
             if (lnT > ln_tau_inf(r) - 8 * eps - REF_ERR(lm) && got <= tmax && got >= 0) return 0;
             ++n_bad;
             if (n_bad < 10) printf("  %s: xi %.17g: got %.17g, no root\n", what, xi, got);
