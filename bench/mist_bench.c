@@ -23,7 +23,8 @@
  * stream run over k times: MIN_S), with the spread (min..max of the
  * repetitions); a ratio is the median over 15 turns of one repetition of
  * the function and one of its baseline (measure_vs).  Run: ./build/mist_bench  (see README.md;
- * ./build/mist_bench tab: the tabulated phase functions alone). */
+ * ./build/mist_bench tab: the tabulated phase functions alone; hfog: the
+ * height fog alone). */
 #define _POSIX_C_SOURCE 199309L
 #include "mist.h"
 #include "mist_mie.h"
@@ -990,6 +991,44 @@ static double c_fog_makef(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
 static double c_fog_make(void) { double s_ = 0; int i; for (i = 0; i < N; ++i) {
     mist_fog f = mist_fog_make(ud[i], 0.5, 17. * xd[i], xd[N - 1 - i]); s_ += f.alpha; } return s_; }
 
+/* the height fog's rows (./mist_bench hfog: these alone) */
+static void hfog_rows(void)
+{
+    bench_fn base;
+    hfog_setup();
+    printf("\nHeight fog [I18], per ray (three channels), rays ending on the ground "
+           "(the fog's base):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_transmittancef", c_hf_trf, "printed", base);
+    row("mist_hfog_inscatterf", c_hf_inf, "printed", base);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    row("mist_hfog_evalf", c_hf_evf, "printed", base);
+    row("mist_hfog_layers_evalf (2, 8 pieces)", c_hf_lyf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_transmittance", c_hf_tr, "printed", base);
+    row("mist_hfog_inscatter", c_hf_in, "printed", base);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    row("mist_hfog_eval", c_hf_ev, "printed", base);
+    row("mist_hfog_layers_eval (2, 8 pieces)", c_hf_ly, "printed", base);
+    hfog_deep = 1;
+    hfog_setup();
+    printf("rays going on below the ground, to y = -1500 (fog up to e^12 denser):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    hfog_deep = 0;
+    hfog_setup();
+    base = c_col_printedf;
+    row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
+    row("mist_hfog_columnf", c_colf, "printed", base);
+    row("mist_hfog_column", c_col, "printed", base);
+}
+
 static void coverage_rows(void)
 {
     bench_fn base;
@@ -1067,37 +1106,7 @@ static void coverage_rows(void)
     row("mist_phase_sample_dirf (Draine)", c_ph_dirf, "mist_phase_samplef", b_phase_draine_samplef);
     row("mist_phase_sample_dir  (Draine)", c_ph_dir, "mist_phase_sample", b_phase_draine_sample);
 
-    printf("\nHeight fog [I18], per ray (three channels), rays ending on the ground "
-           "(the fog's base):\n");
-    base = c_hf_printedf;
-    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
-    row("mist_hfog_transmittancef", c_hf_trf, "printed", base);
-    row("mist_hfog_inscatterf", c_hf_inf, "printed", base);
-    row("mist_hfog_applyf", c_hf_apf, "printed", base);
-    row("mist_hfog_evalf", c_hf_evf, "printed", base);
-    row("mist_hfog_layers_evalf (2, 8 pieces)", c_hf_lyf, "printed", base);
-    base = c_hf_printed;
-    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
-    row("mist_hfog_transmittance", c_hf_tr, "printed", base);
-    row("mist_hfog_inscatter", c_hf_in, "printed", base);
-    row("mist_hfog_apply", c_hf_ap, "printed", base);
-    row("mist_hfog_eval", c_hf_ev, "printed", base);
-    row("mist_hfog_layers_eval (2, 8 pieces)", c_hf_ly, "printed", base);
-    hfog_deep = 1;
-    hfog_setup();
-    printf("rays going on below the ground, to y = -1500 (fog up to e^12 denser):\n");
-    base = c_hf_printedf;
-    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
-    row("mist_hfog_applyf", c_hf_apf, "printed", base);
-    base = c_hf_printed;
-    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
-    row("mist_hfog_apply", c_hf_ap, "printed", base);
-    hfog_deep = 0;
-    hfog_setup();
-    base = c_col_printedf;
-    row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
-    row("mist_hfog_columnf", c_colf, "printed", base);
-    row("mist_hfog_column", c_col, "printed", base);
+    hfog_rows();
     base = c_seg_constf;
     row("constant-coefficient step (float)", c_seg_constf, NULL, NULL);
     row("mist_segment_linearf", c_segf, "constant", base);
@@ -1342,6 +1351,12 @@ int main(int argc, char **argv)
            "ratio to the baseline named\n\n", REPS, N);
     if (argc > 1 && strcmp(argv[1], "tab") == 0) {   /* ./mist_bench tab: the tables alone */
         tab_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "hfog") == 0) {  /* ./mist_bench hfog: the height fog alone */
+        fog_f = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+        fog_d = mist_fog_make(0.988, 0.556, 22.0, 0.482);
+        hfog_rows();
         return 0;
     }
 

@@ -4845,6 +4845,43 @@ MIST__F MIST__HRAY MIST__FN(mist__hray_eval)(MIST__T y, MIST__T w, MIST__T t0, M
             ah = MIST__FN(mist__ddiv)(p, pe, Hs, &al);
             xh = MIST__FN(mist__ddiv)(f, fe, Hs, &xl);
         }
+        /* THE COMMON CASE, straight: a finite ray (t0 = 0, not scaled) whose
+         * exponents lie within XLIM and whose products below are normal.
+         * mist__expmul_f is then these products times one exp each (its fast
+         * path): the same operations in the same order, so the same values,
+         * without its range tests and with e^-h taken once for the lower
+         * end and for the density there. */
+        if (s <= MIST__BIG && t0 == MIST__C(0) && sc == MIST__C(1) && d0 >= MIST__TMIN
+            && hh > -MIST__XLIM && hh < MIST__XLIM && xh > -MIST__XLIM && xh < MIST__XLIM
+            && hl > MIST__C(-1e-3) && hl < MIST__C(1e-3) && xl > MIST__C(-1e-3)
+            && xl < MIST__C(1e-3)) {
+            const MIST__T tmin = MIST__TMIN;
+            MIST__T e0 = MIST__M(exp)(-hh), e1 = MIST__M(exp)(-xh), q0, q1, p1, p2, el, ll, cl;
+            q0 = d0 * e0 * (MIST__C(1) - hl);
+            q1 = d0 * e1 * (MIST__C(1) - xl);
+            el = p < MIST__C(0) ? e1 : e0;              /* the lower end */
+            ll = p < MIST__C(0) ? xl : hl;
+            za = ah < MIST__C(0) ? -ah : ah;
+            aw = w < MIST__C(0) ? -w : w;
+            if (za < MIST__C(1)) {
+                p1 = d0 * s;
+                p2 = p1 * MIST__FN(mist__phi1)(za);
+                cl = p2;
+            } else {
+                p1 = d0 * H;
+                p2 = p1 * -MIST__FN(mist__expm1)(-za);
+                cl = p2 / aw;
+            }
+            cl = cl * el * (MIST__C(1) - ll);
+            if (q0 >= tmin && q0 <= MIST__BIG && q1 >= tmin && q1 <= MIST__BIG && p1 >= tmin
+                && p1 <= MIST__BIG && p2 >= tmin && p2 <= MIST__BIG && cl >= tmin
+                && cl <= MIST__BIG && (za < MIST__C(1) || (p2 / aw >= tmin && p2 / aw <= MIST__BIG))) {
+                r.rho0 = q0; r.r0m = MIST__FN(mist__frexp)(q0, &r.r0e);
+                r.rho1 = q1; r.r1m = MIST__FN(mist__frexp)(q1, &r.r1e);
+                r.col = cl;  r.cm = MIST__FN(mist__frexp)(cl, &r.ce);
+                return r;
+            }
+        }
     }
     r.r0m = MIST__FN(mist__expmul_f)(d0, MIST__C(1), MIST__C(1), MIST__C(1), MIST__C(1), hh, hl,
                                      &r.r0e);
@@ -4941,6 +4978,17 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
         && MIST__FN(mist__finite)(f->base);
 }
 
+/* x = 0 or 2^-L < x < 2^L, L = 29.9 (float) or 249.1 (double): the
+ * height fog's straight path multiplies at most four such factors (one a
+ * sum of two) and at most one in [2^-5, 1], or divides three by one: a
+ * partial product is 0 or within 2^(+-(4 L + 1)), normal (float: 2^+-120.6
+ * against 2^-126 and 2^128). */
+MIST__F MIST__HOT int MIST__FN(mist__hmod)(MIST__T x)
+{
+    return x == MIST__C(0)
+        || (x > MIST__C(MIST__DBL ? 1e-75 : 1e-9) && x < MIST__C(MIST__DBL ? 1e75 : 1e9));
+}
+
 /* Transmittance and in-scattered radiance of the ray from `origin` along
  * `dir` over `length` (+inf allowed): the background seen through the fog
  * becomes  background * transmittance + inscatter.  Either pointer may be
@@ -4990,6 +5038,37 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
              * coefficients' 2^sx (mist__hlayer) */
             int ce = ray.ce + sx[c], r0e = ray.r0e + sx[c], r1e = ray.r1e + sx[c];
             if (!(st[c] > MIST__C(0)) || !(ray.cm > MIST__C(0))) continue;
+            if (!fog->sun_extinction && sx[c] == 0 && MIST__FN(mist__hmod)(st[c])
+                && ray.col > MIST__C(0) && MIST__FN(mist__hmod)(ray.col)
+                && (!inscatter || (MIST__FN(mist__hmod)(E[c]) && MIST__FN(mist__hmod)(La[c])
+                                   && MIST__FN(mist__hmod)(sR[c]) && MIST__FN(mist__hmod)(sM[c])
+                                   && MIST__FN(mist__hmod)(pM)))) {
+                /* THE COMMON CASE, straight: every factor below is 0 or
+                 * within 2^+-L (mist__hmod), so that every partial product
+                 * of at most four of them (and of pR, f1, omt in [2^-5, 1])
+                 * is normal, and mist__hmul and mist__expmul are these
+                 * products (their scaled exponents add exactly): the same
+                 * operations in the same order, so the same values, without
+                 * the scaling.  One term a statement: no contraction. */
+                MIST__T a, b, d;
+                tau = st[c] * ray.col;
+                tr[c] = MIST__M(exp)(-tau);
+                if (!inscatter) continue;
+                omt = -MIST__FN(mist__expm1)(-tau);
+                if (tau < MIST__C(1)) {
+                    f1 = omt / tau;
+                    a = La[c] * src * f1 * ray.col;
+                    b = E[c] * sR[c] * (pR * f1) * ray.col;
+                    d = E[c] * sM[c] * (pM * f1) * ray.col;
+                } else {
+                    a = La[c] * src * omt / st[c];
+                    b = E[c] * sR[c] * (pR * omt) / st[c];
+                    d = E[c] * sM[c] * (pM * omt) / st[c];
+                }
+                b += d;
+                ls[c] = a + b;
+                continue;
+            }
             /* st col, scaled: right where the column alone overflows (a
              * subnormal extinction through a huge density) */
             tau = MIST__FN(mist__hmul)(st[c], MIST__C(1), MIST__C(1), MIST__C(1), ray.cm, ce,
