@@ -4539,6 +4539,7 @@ MIST__F void MIST__FN(mist__impl_tab_sample_n)(const MIST__TAB *t, const MIST__T
 #define MIST__RGB   MIST__FN(mist_rgb)
 #define MIST__HFOG  MIST__FN(mist_hfog)
 #define MIST__HRAY  MIST__FN(mist__hray)
+#define MIST__HFK   MIST__FN(mist__hfk)
 /* a bound on |x| with exp(+-x) normal (MIST__BIG: see mist__two_prod) */
 #define MIST__XLIM  MIST__C(MIST__DBL ? 700 : 85)
 
@@ -4978,15 +4979,131 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
         && MIST__FN(mist__finite)(f->base);
 }
 
-/* x = 0 or 2^-L < x < 2^L, L = 29.9 (float) or 249.1 (double): the
- * height fog's straight path multiplies at most four such factors (one a
- * sum of two) and at most one in [2^-5, 1], or divides three by one: a
- * partial product is 0 or within 2^(+-(4 L + 1)), normal (float: 2^+-120.6
- * against 2^-126 and 2^128). */
-MIST__F MIST__HOT int MIST__FN(mist__hmod)(MIST__T x)
+/* THE STRAIGHT PATH (mist__hfast): one ray in the common case, branch-free
+ * (the batch forms vectorise it; the scalar functions take the same code,
+ * so the two agree bit for bit).  A fog qualifies (mist__hfk_make) where
+ * the sun is not dimmed, nothing was halved (mist__hlayer) and its
+ * density, scale height and extinctions lie in (lo, hi) = 1e+-75 (float
+ * 1e+-9), its lights and scatterings there or at 0; a ray where its lower
+ * end's exponent h is within +-XLIM, density e^-h is normal, its length
+ * in (lo, hi) or +inf going up, its column in (lo, hi), its phase values
+ * 0 or in (lo, hi) and every tau <= XLIM.  Then no product leaves the
+ * normal range (at most four factors in (lo, hi), 4 lg(1e9) = 119.6 <
+ * 126 in float, and numbers in [e^-XLIM, 1]) and, with e^x = 2^k (1 + p)
+ * (mist__hexp, about an ulp):
+ *   C = density e^-h (1 - h_lo) s phi1(z),  z = |w| s / H  (s phi1(z) =
+ *       (H/|w|)(1 - e^-z) for z >= 1: also the ray to infinity going up),
+ *   T = 2^k + 2^k p,  1 - T = (1 - 2^k) - 2^k p   (x = -st C: one
+ *       evaluation for both, each within about an ulp: 1 - 2^k is exact,
+ *       and |2^k p| <= 0.42 (1 - T) where k != 0),
+ *   L = (La (sR + sM) + E sR pR + E sM pM) (1 - T) / st,
+ * h as hi + lo from error-free sums and products (as mist__hray_eval;
+ * the remainder of hh = n / H taken with 1/H, exact), 1/H once.  The
+ * scaled path does the rest.  Measured against long double quadrature:
+ * tests/test_height_fog.c (grid and random rays). */
+typedef struct MIST__HFK {
+    MIST__T H, iH, d0, st[3], a[3], r[3], m[3];
+} MIST__HFK;
+
+/* e^x = *s (1 + p), p returned, for x in [-XLIM, XLIM]: x = k ln 2 + r, k
+ * rounded by the 1.5 2^mant shift (2^k from its bits), r in two parts (ln
+ * 2's high part has 32 bits (float 16): k ln2_hi exact), p = e^r - 1 by
+ * its Taylor series to r^13 (float r^8), |r| < 0.35: within 1.3e-17 of p
+ * (float 1.7e-9), summed by Estrin's scheme (a short chain: 3.2x the
+ * latency of libm's exp in Horner's form, measured). */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hexp)(MIST__T x, MIST__T *s)
 {
-    return x == MIST__C(0)
-        || (x > MIST__C(MIST__DBL ? 1e-75 : 1e-9) && x < MIST__C(MIST__DBL ? 1e75 : 1e9));
+    const MIST__T sh = MIST__C(MIST__DBL ? 6755399441055744.0 : 12582912.0);
+    MIST__T kb = x * MIST__C(1.44269504088896340736) + sh, k = kb - sh, r, q, r2, r4;
+    MIST__UB b, ks;
+    memcpy(&ks, &sh, sizeof ks);
+    memcpy(&b, &kb, sizeof b);
+    b = (b - ks + (MIST__UB)(MIST__EB >> 1)) << MIST__MB;
+    memcpy(s, &b, sizeof b);
+#if MIST__DBL
+    r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
+    r2 = r * r;
+    r4 = r2 * r2;
+    q = ((0.5 + r * (1.0 / 6.0)) + r2 * (1.0 / 24.0 + r * (1.0 / 120.0)))
+        + r4 * (((1.0 / 720.0 + r * (1.0 / 5040.0)) + r2 * (1.0 / 40320.0 + r * (1.0 / 362880.0)))
+                + r4 * ((1.0 / 3628800.0 + r * (1.0 / 39916800.0))
+                        + r2 * (1.0 / 479001600.0 + r * (1.0 / 6227020800.0))));
+#else
+    r = (x - k * 0.693145751953125f) - k * 1.428606765330187e-06f;
+    r2 = r * r;
+    r4 = r2 * r2;
+    q = ((0.5f + r * (1.0f / 6.0f)) + r2 * (1.0f / 24.0f + r * (1.0f / 120.0f)))
+        + r4 * ((1.0f / 720.0f + r * (1.0f / 5040.0f)) + r2 * (1.0f / 40320.0f));
+#endif
+    return r + r2 * q;
+}
+
+/* The straight path for one ray (see above): returns 1 with tr[] and (ins)
+ * ls[], else 0 (the caller takes the scaled path).  y - yb: the start's
+ * height above the base; w in [-1, 1]; s > 0. */
+MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST__T yb, MIST__T w,
+                                            MIST__T s, MIST__T pR, const MIST__T *pM, int ins,
+                                            MIST__T *tr, MIST__T *ls)
+{
+    const MIST__T lo = MIST__C(MIST__DBL ? 1e-75 : 1e-9), hi = MIST__C(MIST__DBL ? 1e75 : 1e9);
+    MIST__T n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, sc, q, om, col;
+    int c, ok;
+    n = MIST__FN(mist__two_sum)(y, -yb, &ne);              /* y - yb */
+    p = MIST__FN(mist__two_prod_b)(w, s < hi ? s : MIST__C(0), &pe);   /* w s; s = inf: 0 */
+    f = MIST__FN(mist__two_sum)(n, p, &fe);
+    fe += ne + pe;
+    n = w < MIST__C(0) ? f : n;                            /* the lower end */
+    ne = w < MIST__C(0) ? fe : ne;
+    n = MIST__FN(mist__two_sum)(n, ne, &ne);
+    hh = n * k->iH;                                        /* (n + ne) / H = hh + hl */
+    t = MIST__FN(mist__two_prod_b)(hh, k->H, &te);
+    hl = (((n - t) - te) + ne) * k->iH;
+    ok = hh >= -MIST__XLIM && hh <= MIST__XLIM && ((s > lo && s < hi) || (s > hi && w > MIST__C(0)));
+    hh = ok ? hh : MIST__C(0);
+    e = MIST__C(1) + MIST__FN(mist__hexp)(-hh, &sc);
+    e = k->d0 * (sc * e * (MIST__C(1) - hl));
+    aw = w < MIST__C(0) ? -w : w;
+    z = aw * s * k->iH;
+    q = MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &sc);
+    om = (MIST__C(1) - sc) - sc * q;                       /* 1 - e^-z */
+    col = z < MIST__C(1) ? (z > MIST__C(0) ? s * (om / z) : s) : k->H * om / aw;
+    col = e * col;
+    ok = ok && e >= MIST__TMIN && e <= MIST__BIG && col > lo && col < hi;
+    for (c = 0; c < 3; ++c) {
+        MIST__T tau = k->st[c] * col;
+        ok = ok && tau <= MIST__XLIM && (!ins || pM[c] == MIST__C(0) || (pM[c] > lo && pM[c] < hi));
+        q = MIST__FN(mist__hexp)(tau < MIST__XLIM ? -tau : -MIST__XLIM, &sc);
+        tr[c] = sc + sc * q;
+        if (ins) {
+            om = (MIST__C(1) - sc) - sc * q;
+            ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om / k->st[c];
+        }
+    }
+    return ok;
+}
+
+/* The straight path's constants of a fog (see THE STRAIGHT PATH): returns
+ * whether it qualifies.  st, sR, sM, E, La: as mist__hlayer and the
+ * sanitised lights give them. */
+MIST__F int MIST__FN(mist__hfk_make)(const MIST__HFOG *fog, MIST__T d0, MIST__T H, const MIST__T *st,
+                                     const int *sx, const MIST__T *sR, const MIST__T *sM,
+                                     const MIST__T *E, const MIST__T *La, MIST__HFK *k)
+{
+    const MIST__T lo = MIST__C(MIST__DBL ? 1e-75 : 1e-9), hi = MIST__C(MIST__DBL ? 1e75 : 1e9);
+    int c, ok = !fog->sun_extinction && d0 > lo && d0 < hi && H > lo && H < hi;
+    k->H = H; k->iH = MIST__C(1) / H; k->d0 = d0;
+    for (c = 0; c < 3; ++c) {
+        ok = ok && sx[c] == 0 && st[c] > lo && st[c] < hi
+             && (E[c] == MIST__C(0) || (E[c] > lo && E[c] < hi))
+             && (La[c] == MIST__C(0) || (La[c] > lo && La[c] < hi))
+             && (sR[c] == MIST__C(0) || (sR[c] > lo && sR[c] < hi))
+             && (sM[c] == MIST__C(0) || (sM[c] > lo && sM[c] < hi));
+        k->st[c] = st[c];
+        k->a[c] = La[c] * (sR[c] + sM[c]);
+        k->r[c] = E[c] * sR[c];
+        k->m[c] = E[c] * sM[c];
+    }
+    return ok;
 }
 
 /* Transmittance and in-scattered radiance of the ray from `origin` along
@@ -5016,7 +5133,6 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
             MIST__FN(mist__hlayer)(fog, c, &sR[c], &sM[c], &st[c], &sx[c]);
             E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]);
         }
-        ray = MIST__FN(mist__hray_eval)(origin.y, w, MIST__C(0), length, fog->base, H, d0);
         if (inscatter) {
             MIST__V3 l = MIST__FN(mist__unit)(fog->sun_dir);
             MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
@@ -5026,49 +5142,30 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
              * multiply it (else the factor is lost: 5% at tau = 0.1) */
             pM = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
             ly = l.y;
-            if (ly > MIST__C(0)) {              /* nu = 1 - w / ly, exact near 0 */
+            if (fog->sun_extinction && ly > MIST__C(0)) {   /* nu = 1 - w / ly, exact near 0 */
                 nu = (ly - w) / ly;             /* (its sign) */
                 anu = ly - w;                   /* |nu| ly: |nu| overflows for a */
                 anu = anu < MIST__C(0) ? -anu : anu;    /* subnormal ly */
             }
         }
+        {   /* the common case: THE STRAIGHT PATH */
+            MIST__HFK k;
+            MIST__T T[3], L[3] = { 0, 0, 0 }, pm[3];
+            for (c = 0; c < 3; ++c) pm[c] = pM;
+            if (MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k)
+                && MIST__FN(mist__hfast)(&k, origin.y, fog->base, w, length, pR, pm,
+                                         inscatter != MIST__NULL, T, L)) {
+                for (c = 0; c < 3; ++c) { tr[c] = T[c]; ls[c] = L[c]; }
+                goto out;
+            }
+        }
+        ray = MIST__FN(mist__hray_eval)(origin.y, w, MIST__C(0), length, fog->base, H, d0);
         for (c = 0; c < 3; ++c) {
             MIST__T tau, omt, f1, src = sR[c] + sM[c];
             /* the exponents of the scaled column and densities, with the
              * coefficients' 2^sx (mist__hlayer) */
             int ce = ray.ce + sx[c], r0e = ray.r0e + sx[c], r1e = ray.r1e + sx[c];
             if (!(st[c] > MIST__C(0)) || !(ray.cm > MIST__C(0))) continue;
-            if (!fog->sun_extinction && sx[c] == 0 && MIST__FN(mist__hmod)(st[c])
-                && ray.col > MIST__C(0) && MIST__FN(mist__hmod)(ray.col)
-                && (!inscatter || (MIST__FN(mist__hmod)(E[c]) && MIST__FN(mist__hmod)(La[c])
-                                   && MIST__FN(mist__hmod)(sR[c]) && MIST__FN(mist__hmod)(sM[c])
-                                   && MIST__FN(mist__hmod)(pM)))) {
-                /* THE COMMON CASE, straight: every factor below is 0 or
-                 * within 2^+-L (mist__hmod), so that every partial product
-                 * of at most four of them (and of pR, f1, omt in [2^-5, 1])
-                 * is normal, and mist__hmul and mist__expmul are these
-                 * products (their scaled exponents add exactly): the same
-                 * operations in the same order, so the same values, without
-                 * the scaling.  One term a statement: no contraction. */
-                MIST__T a, b, d;
-                tau = st[c] * ray.col;
-                tr[c] = MIST__M(exp)(-tau);
-                if (!inscatter) continue;
-                omt = -MIST__FN(mist__expm1)(-tau);
-                if (tau < MIST__C(1)) {
-                    f1 = omt / tau;
-                    a = La[c] * src * f1 * ray.col;
-                    b = E[c] * sR[c] * (pR * f1) * ray.col;
-                    d = E[c] * sM[c] * (pM * f1) * ray.col;
-                } else {
-                    a = La[c] * src * omt / st[c];
-                    b = E[c] * sR[c] * (pR * omt) / st[c];
-                    d = E[c] * sM[c] * (pM * omt) / st[c];
-                }
-                b += d;
-                ls[c] = a + b;
-                continue;
-            }
             /* st col, scaled: right where the column alone overflows (a
              * subnormal extinction through a huge density) */
             tau = MIST__FN(mist__hmul)(st[c], MIST__C(1), MIST__C(1), MIST__C(1), ray.cm, ce,
@@ -5126,6 +5223,7 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
             }
         }
     }
+out:
     if (transmittance) { transmittance->r = tr[0]; transmittance->g = tr[1]; transmittance->b = tr[2]; }
     if (inscatter) { inscatter->r = ls[0]; inscatter->g = ls[1]; inscatter->b = ls[2]; }
 }
@@ -6208,6 +6306,7 @@ MIST__F MIST__T MIST__FN(mist__impl_segment_linear)(MIST__T k0, MIST__T k1, MIST
 #undef MIST__RGB
 #undef MIST__HFOG
 #undef MIST__HRAY
+#undef MIST__HFK
 #undef MIST__BIG
 #undef MIST__TMIN
 #undef MIST__XLIM
