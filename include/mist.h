@@ -4990,12 +4990,11 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
  * 0 or in (lo, hi) and every tau <= XLIM.  Then no product leaves the
  * normal range (at most four factors in (lo, hi), 4 lg(1e9) = 119.6 <
  * 126 in float, and numbers in [e^-XLIM, 1]) and, with e^x = 2^k (1 + p)
- * (mist__hexp, about an ulp):
+ * (mist__hexp):
  *   C = density e^-h (1 - h_lo) s phi1(z),  z = |w| s / H  (s phi1(z) =
  *       (H/|w|)(1 - e^-z) for z >= 1: also the ray to infinity going up),
- *   T = 2^k + 2^k p,  1 - T = (1 - 2^k) - 2^k p   (x = -st C: one
- *       evaluation for both, each within about an ulp: 1 - 2^k is exact,
- *       and |2^k p| <= 0.42 (1 - T) where k != 0),
+ *   T = e^x and 1 - T from one evaluation (x = -st C), within about an
+ *       ulp each,
  *   L = (La (sR + sM) + E sR pR + E sM pM) (1 - T) / st,
  * h as hi + lo from error-free sums and products (as mist__hray_eval;
  * the remainder of hh = n / H taken with 1/H, exact), 1/H once.  The
@@ -5005,21 +5004,23 @@ typedef struct MIST__HFK {
     MIST__T H, iH, d0, st[3], a[3], r[3], m[3];
 } MIST__HFK;
 
-/* e^x = *s (1 + p), p returned, for x in [-XLIM, XLIM]: x = k ln 2 + r, k
- * rounded by the 1.5 2^mant shift (2^k from its bits), r in two parts (ln
- * 2's high part has 32 bits (float 16): k ln2_hi exact), p = e^r - 1 by
- * its Taylor series to r^13 (float r^8), |r| < 0.35: within 1.3e-17 of p
- * (float 1.7e-9), summed by Estrin's scheme (a short chain: 3.2x the
- * latency of libm's exp in Horner's form, measured). */
-MIST__F MIST__HOT MIST__T MIST__FN(mist__hexp)(MIST__T x, MIST__T *s)
+/* e^x returned and *om = 1 - e^x, for x in [-XLIM, XLIM]: x = k ln 2 + r,
+ * k rounded by the 1.5 2^mant shift (2^k from its bits), r in two parts
+ * (ln 2's high part has 32 bits (float 16): k ln2_hi exact), e^r - 1 = r
+ * + t, t = r^2 q by its Taylor series to r^13 (float r^8), |r| < 0.35:
+ * within 1.3e-17 (float 1.7e-9), summed by Estrin's scheme (a short
+ * chain).  e^x = 2^k ((1 + r) + t) with 1 + r error-free (Fast2Sum): half
+ * an ulp and t's rounding (|t| < 0.07); 1 - e^x = (1 - 2^k) - 2^k (r + t),
+ * 1 - 2^k exact, |2^k (r + t)| <= 0.42 of it where k != 0: about an ulp. */
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hexp)(MIST__T x, MIST__T *om)
 {
     const MIST__T sh = MIST__C(MIST__DBL ? 6755399441055744.0 : 12582912.0);
-    MIST__T kb = x * MIST__C(1.44269504088896340736) + sh, k = kb - sh, r, q, r2, r4;
+    MIST__T kb = x * MIST__C(1.44269504088896340736) + sh, k = kb - sh, r, q, r2, r4, sc, a, ae;
     MIST__UB b, ks;
     memcpy(&ks, &sh, sizeof ks);
     memcpy(&b, &kb, sizeof b);
     b = (b - ks + (MIST__UB)(MIST__EB >> 1)) << MIST__MB;
-    memcpy(s, &b, sizeof b);
+    memcpy(&sc, &b, sizeof b);
 #if MIST__DBL
     r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
     r2 = r * r;
@@ -5035,7 +5036,10 @@ MIST__F MIST__HOT MIST__T MIST__FN(mist__hexp)(MIST__T x, MIST__T *s)
     q = ((0.5f + r * (1.0f / 6.0f)) + r2 * (1.0f / 24.0f + r * (1.0f / 120.0f)))
         + r4 * ((1.0f / 720.0f + r * (1.0f / 5040.0f)) + r2 * (1.0f / 40320.0f));
 #endif
-    return r + r2 * q;
+    q = r2 * q;
+    *om = (MIST__C(1) - sc) - sc * (r + q);
+    a = MIST__FN(mist__fast_two_sum)(MIST__C(1), r, &ae);
+    return sc * (a + (ae + q));
 }
 
 /* The straight path for one ray (see above): returns 1 with tr[] and (ins)
@@ -5046,7 +5050,7 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST_
                                             MIST__T *tr, MIST__T *ls)
 {
     const MIST__T lo = MIST__C(MIST__DBL ? 1e-75 : 1e-9), hi = MIST__C(MIST__DBL ? 1e75 : 1e9);
-    MIST__T n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, sc, q, om, col;
+    MIST__T n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, om, col;
     int c, ok;
     n = MIST__FN(mist__two_sum)(y, -yb, &ne);              /* y - yb */
     p = MIST__FN(mist__two_prod_b)(w, s < hi ? s : MIST__C(0), &pe);   /* w s; s = inf: 0 */
@@ -5060,24 +5064,19 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST_
     hl = (((n - t) - te) + ne) * k->iH;
     ok = hh >= -MIST__XLIM && hh <= MIST__XLIM && ((s > lo && s < hi) || (s > hi && w > MIST__C(0)));
     hh = ok ? hh : MIST__C(0);
-    e = MIST__C(1) + MIST__FN(mist__hexp)(-hh, &sc);
-    e = k->d0 * (sc * e * (MIST__C(1) - hl));
+    e = MIST__FN(mist__hexp)(-hh, &om);
+    e = k->d0 * (e * (MIST__C(1) - hl));
     aw = w < MIST__C(0) ? -w : w;
     z = aw * s * k->iH;
-    q = MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &sc);
-    om = (MIST__C(1) - sc) - sc * q;                       /* 1 - e^-z */
+    (void)MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &om);   /* 1 - e^-z */
     col = z < MIST__C(1) ? (z > MIST__C(0) ? s * (om / z) : s) : k->H * om / aw;
     col = e * col;
     ok = ok && e >= MIST__TMIN && e <= MIST__BIG && col > lo && col < hi;
     for (c = 0; c < 3; ++c) {
         MIST__T tau = k->st[c] * col;
         ok = ok && tau <= MIST__XLIM && (!ins || pM[c] == MIST__C(0) || (pM[c] > lo && pM[c] < hi));
-        q = MIST__FN(mist__hexp)(tau < MIST__XLIM ? -tau : -MIST__XLIM, &sc);
-        tr[c] = sc + sc * q;
-        if (ins) {
-            om = (MIST__C(1) - sc) - sc * q;
-            ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om / k->st[c];
-        }
+        tr[c] = MIST__FN(mist__hexp)(tau < MIST__XLIM ? -tau : -MIST__XLIM, &om);
+        if (ins) ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om / k->st[c];
     }
     return ok;
 }
