@@ -870,6 +870,16 @@ MIST__API mist_rgb mist_hfog_apply(const mist_hfog *fog, mist_vec3 origin, mist_
 MIST__API mist_rgbf mist_hfog_applyf(const mist_hfogf *fog, mist_vec3f origin, mist_vec3f dir,
                                      float length, mist_rgbf background)
     { return mist__impl_hfog_applyf(fog, origin, dir, length, background); }
+#ifndef MIST_NO_BATCH
+MIST__API void mist_hfog_apply_n(const mist_hfog *fog, const mist_vec3 *origin, const mist_vec3 *dir,
+                                 const double *length, const mist_rgb *background, mist_rgb *out,
+                                 size_t n)
+    { mist__impl_hfog_apply_n(fog, origin, dir, length, background, out, n); }
+MIST__API void mist_hfog_apply_nf(const mist_hfogf *fog, const mist_vec3f *origin,
+                                  const mist_vec3f *dir, const float *length,
+                                  const mist_rgbf *background, mist_rgbf *out, size_t n)
+    { mist__impl_hfog_apply_nf(fog, origin, dir, length, background, out, n); }
+#endif
 MIST__API void mist_hfog_eval(const mist_hfog *fog, mist_vec3 origin, mist_vec3 dir,
                               double length, mist_rgb *transmittance, mist_rgb *inscatter)
     { mist__impl_hfog_eval(fog, origin, dir, length, transmittance, inscatter); }
@@ -5062,19 +5072,22 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST_
     hh = n * k->iH;                                        /* (n + ne) / H = hh + hl */
     t = MIST__FN(mist__two_prod_b)(hh, k->H, &te);
     hl = (((n - t) - te) + ne) * k->iH;
-    ok = hh >= -MIST__XLIM && hh <= MIST__XLIM && ((s > lo && s < hi) || (s > hi && w > MIST__C(0)));
+    /* (& and selects, no branch; every division has a safe divisor) */
+    ok = (hh >= -MIST__XLIM) & (hh <= MIST__XLIM) & (((s > lo) & (s < hi)) | ((s > hi) & (w > MIST__C(0))));
     hh = ok ? hh : MIST__C(0);
     e = MIST__FN(mist__hexp)(-hh, &om);
     e = k->d0 * (e * (MIST__C(1) - hl));
     aw = w < MIST__C(0) ? -w : w;
     z = aw * s * k->iH;
     (void)MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &om);   /* 1 - e^-z */
-    col = z < MIST__C(1) ? (z > MIST__C(0) ? s * (om / z) : s) : k->H * om / aw;
+    t = s * (om / (z > MIST__C(0) ? z : MIST__C(1)));
+    col = k->H * om / (aw > MIST__C(0) ? aw : MIST__C(1));
+    col = z < MIST__C(1) ? (z > MIST__C(0) ? t : s) : col;
     col = e * col;
-    ok = ok && e >= MIST__TMIN && e <= MIST__BIG && col > lo && col < hi;
+    ok &= (e >= MIST__TMIN) & (e <= MIST__BIG) & (col > lo) & (col < hi);
     for (c = 0; c < 3; ++c) {
         MIST__T tau = k->st[c] * col;
-        ok = ok && tau <= MIST__XLIM && (!ins || pM[c] == MIST__C(0) || (pM[c] > lo && pM[c] < hi));
+        ok &= (tau <= MIST__XLIM) & (!ins | (pM[c] == MIST__C(0)) | ((pM[c] > lo) & (pM[c] < hi)));
         tr[c] = MIST__FN(mist__hexp)(tau < MIST__XLIM ? -tau : -MIST__XLIM, &om);
         if (ins) ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om / k->st[c];
     }
@@ -5259,6 +5272,78 @@ MIST__F MIST__RGB MIST__FN(mist__impl_hfog_apply)(const MIST__HFOG *fog, MIST__V
     l.b += background.b * t.b;
     return l;
 }
+
+#ifndef MIST_NO_BATCH
+/* mist_hfog_apply of each ray i < n: origin[i], dir[i], length[i],
+ * background[i] -> out[i], bit for bit (out may equal background; n = 0
+ * does nothing).  The fog is sanitised once; in blocks of 32, each ray's
+ * direction, cosine to the sun and phase values as mist__impl_hfog_eval
+ * takes them (a scalar loop), then THE STRAIGHT PATH over the block (a
+ * branch-free loop: vectorised), and the scalar function for a ray it
+ * does not take (and for every ray of a fog it does not take). */
+MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST__V3 *origin,
+                                               const MIST__V3 *dir, const MIST__T *length,
+                                               const MIST__RGB *background, MIST__RGB *out,
+                                               size_t n)
+{
+    MIST__T st[3], sR[3], sM[3], E[3], La[3], d0 = 0, H = 0, tr[3][32], ls[3][32];
+    MIST__T y[32], w[32], s[32], pR[32], pM[32];
+    int sx[3], ok[32], c, fast;
+    MIST__HFK k;
+    MIST__V3 l = { 0, 0, 1 };
+    size_t i0, i;
+    if (n == 0) return;
+    fast = fog != MIST__NULL;
+    if (fast) {
+        d0 = MIST__FN(mist__pos)(fog->density); H = fog->scale_height;
+        E[0]  = fog->sun.r;           E[1]  = fog->sun.g;           E[2]  = fog->sun.b;
+        La[0] = fog->ambient.r;       La[1] = fog->ambient.g;       La[2] = fog->ambient.b;
+        for (c = 0; c < 3; ++c) {
+            MIST__FN(mist__hlayer)(fog, c, &sR[c], &sM[c], &st[c], &sx[c]);
+            E[c] = MIST__FN(mist__pos)(E[c]); La[c] = MIST__FN(mist__pos)(La[c]);
+        }
+        fast = d0 > MIST__C(0) && H > MIST__C(0) && MIST__FN(mist__finite)(fog->base)
+            && MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k);
+        l = MIST__FN(mist__unit)(fog->sun_dir);
+    }
+    if (!fast) {
+        for (i = 0; i < n; ++i)
+            out[i] = MIST__FN(mist__impl_hfog_apply)(fog, origin[i], dir[i], length[i], background[i]);
+        return;
+    }
+    for (i0 = 0; i0 < n; i0 += 32) {
+        size_t m = n - i0 < 32 ? n - i0 : 32, j;
+        for (j = 0; j < m; ++j) {           /* as mist__impl_hfog_eval */
+            MIST__V3 v = MIST__FN(mist__unit)(dir[i0 + j]);
+            MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
+            w[j] = v.y < MIST__C(-1) ? MIST__C(-1) : (v.y > MIST__C(1) ? MIST__C(1) : v.y);
+            y[j] = origin[i0 + j].y;
+            s[j] = length[i0 + j];
+            pR[j] = MIST__FN(mist__impl_rayleigh_eval)(u);
+            pM[j] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
+        }
+        for (j = 0; j < 32; ++j) {          /* THE STRAIGHT PATH: vectorised */
+            MIST__T pm[3], t3[3], l3[3];
+            size_t q = j < m ? j : 0;
+            pm[0] = pm[1] = pm[2] = pM[q];
+            ok[j] = MIST__FN(mist__hfast)(&k, y[q], fog->base, w[q], s[q], pR[q], pm, 1, t3, l3);
+            for (c = 0; c < 3; ++c) { tr[c][j] = t3[c]; ls[c][j] = l3[c]; }
+        }
+        for (j = 0; j < m; ++j) {
+            i = i0 + j;
+            if (ok[j] && s[j] > MIST__C(0) && MIST__FN(mist__finite)(y[j])) {
+                MIST__RGB b = background[i], r;
+                r.r = ls[0][j]; r.g = ls[1][j]; r.b = ls[2][j];
+                r.r += b.r * tr[0][j];
+                r.g += b.g * tr[1][j];
+                r.b += b.b * tr[2][j];
+                out[i] = r;
+            } else
+                out[i] = MIST__FN(mist__impl_hfog_apply)(fog, origin[i], dir[i], length[i], background[i]);
+        }
+    }
+}
+#endif
 
 /* ------------------------------------------------------------------------ */
 /* Several layers (different scale heights)                                 */
