@@ -5080,10 +5080,11 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST_
     aw = w < MIST__C(0) ? -w : w;
     z = aw * s * k->iH;
     (void)MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &om);   /* 1 - e^-z */
-    t = s * (om / (z > MIST__C(0) ? z : MIST__C(1)));
-    col = k->H * om / (aw > MIST__C(0) ? aw : MIST__C(1));
-    col = z < MIST__C(1) ? (z > MIST__C(0) ? t : s) : col;
-    col = e * col;
+    /* s (1 - e^-z) / z for z < 1, (H (1 - e^-z)) / |w| beyond (z >= 1:
+     * w != 0), s at z = 0: one division */
+    t = (z < MIST__C(1) ? s : k->H) * om;
+    col = t / (z < MIST__C(1) ? (z > MIST__C(0) ? z : MIST__C(1)) : aw);
+    col = e * (z > MIST__C(0) ? col : s);
     ok &= (e >= MIST__TMIN) & (e <= MIST__BIG) & (col > lo) & (col < hi);
     for (c = 0; c < 3; ++c) {
         MIST__T tau = k->st[c] * col;
