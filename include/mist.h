@@ -5021,85 +5021,85 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
  * scaled path does the rest.  Measured against long double quadrature:
  * tests/test_height_fog.c (grid and random rays). */
 typedef struct MIST__HFK {
-    MIST__T H, iH, d0, st[3], a[3], r[3], m[3];
+    double H, iH, d0, st[3], a[3], r[3], m[3];
 } MIST__HFK;
 
-/* e^x returned and *om = 1 - e^x, for x in [-XLIM, XLIM]: x = k ln 2 + r,
- * k rounded by the 1.5 2^mant shift (2^k from its bits), r in two parts
- * (ln 2's high part has 32 bits (float 16): k ln2_hi exact), e^r - 1 = r
- * + t, t = r^2 q by its Taylor series to r^13 (float r^8), |r| < 0.35:
- * within 1.3e-17 (float 1.7e-9), summed by Estrin's scheme (a short
- * chain).  e^x = 2^k ((1 + r) + t) with 1 + r error-free (Fast2Sum): half
- * an ulp and t's rounding (|t| < 0.07); 1 - e^x = (1 - 2^k) - 2^k (r + t),
- * 1 - 2^k exact, |2^k (r + t)| <= 0.42 of it where k != 0: about an ulp. */
-MIST__F MIST__HOT MIST__T MIST__FN(mist__hexp)(MIST__T x, MIST__T *om)
+/* e^x returned and *om = 1 - e^x, for x in [-700, 700]: x = k ln 2 + r,
+ * k rounded by the 1.5 2^52 shift (2^k from its bits), r in two parts
+ * (ln 2's high part has 32 bits: k ln2_hi exact), e^r - 1 = r + t, t =
+ * r^2 q by its Taylor series to r^13 (float's pass r^8), |r| < 0.35:
+ * within 1.3e-17 (1.7e-9), summed by Estrin's scheme (a short chain).
+ * e^x = 2^k ((1 + r) + t) with 1 + r error-free (Fast2Sum): half an ulp
+ * and t's rounding (|t| < 0.07); 1 - e^x = (1 - 2^k) - 2^k (r + t), 1 - 2^k
+ * exact, |2^k (r + t)| <= 0.42 of it where k != 0: about an ulp. */
+MIST__F MIST__HOT double MIST__FN(mist__hexp)(double x, double *om)
 {
-    const MIST__T sh = MIST__C(MIST__DBL ? 6755399441055744.0 : 12582912.0);
-    MIST__T kb = x * MIST__C(1.44269504088896340736) + sh, k = kb - sh, r, q, r2, r4, sc, a, ae;
-    MIST__UB b, ks;
+    const double sh = 6755399441055744.0;
+    double kb = x * 1.44269504088896340736 + sh, k = kb - sh, r, q, r2, r4, sc, a, ae;
+    uint64_t b, ks;
     memcpy(&ks, &sh, sizeof ks);
     memcpy(&b, &kb, sizeof b);
-    b = (b - ks + (MIST__UB)(MIST__EB >> 1)) << MIST__MB;
+    b = (b - ks + 1023u) << 52;
     memcpy(&sc, &b, sizeof b);
-#if MIST__DBL
     r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
     r2 = r * r;
     r4 = r2 * r2;
+#if MIST__DBL
     q = ((0.5 + r * (1.0 / 6.0)) + r2 * (1.0 / 24.0 + r * (1.0 / 120.0)))
         + r4 * (((1.0 / 720.0 + r * (1.0 / 5040.0)) + r2 * (1.0 / 40320.0 + r * (1.0 / 362880.0)))
                 + r4 * ((1.0 / 3628800.0 + r * (1.0 / 39916800.0))
                         + r2 * (1.0 / 479001600.0 + r * (1.0 / 6227020800.0))));
 #else
-    r = (x - k * 0.693145751953125f) - k * 1.428606765330187e-06f;
-    r2 = r * r;
-    r4 = r2 * r2;
-    q = ((0.5f + r * (1.0f / 6.0f)) + r2 * (1.0f / 24.0f + r * (1.0f / 120.0f)))
-        + r4 * ((1.0f / 720.0f + r * (1.0f / 5040.0f)) + r2 * (1.0f / 40320.0f));
+    q = ((0.5 + r * (1.0 / 6.0)) + r2 * (1.0 / 24.0 + r * (1.0 / 120.0)))
+        + r4 * ((1.0 / 720.0 + r * (1.0 / 5040.0)) + r2 * (1.0 / 40320.0));
 #endif
     q = r2 * q;
-    *om = (MIST__C(1) - sc) - sc * (r + q);
-    a = MIST__FN(mist__fast_two_sum)(MIST__C(1), r, &ae);
+    *om = (1.0 - sc) - sc * (r + q);
+    a = mist__fast_two_sum(1.0, r, &ae);
     return sc * (a + (ae + q));
 }
 
 /* The straight path for one ray (see above): returns 1 with tr[] and (ins)
  * ls[], else 0 (the caller takes the scaled path).  y - yb: the start's
  * height above the base; w in [-1, 1]; s > 0. */
-MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, MIST__T y, MIST__T yb, MIST__T w,
-                                            MIST__T s, MIST__T pR, const MIST__T *pM, int ins,
-                                            MIST__T *tr, MIST__T *ls)
+MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double yb, double w,
+                                            double s, double pR, const double *pM, int ins,
+                                            double *tr, double *ls)
 {
-    const MIST__T lo = MIST__C(MIST__DBL ? 1e-75 : 1e-9), hi = MIST__C(MIST__DBL ? 1e75 : 1e9);
-    MIST__T n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, om, col;
+    const double lo = 1e-75, hi = 1e75;
+    double n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, om, col;
     int c, ok;
-    n = MIST__FN(mist__two_sum)(y, -yb, &ne);              /* y - yb */
-    p = MIST__FN(mist__two_prod_b)(w, s < hi ? s : MIST__C(0), &pe);   /* w s; s = inf: 0 */
-    f = MIST__FN(mist__two_sum)(n, p, &fe);
+    n = mist__two_sum(y, -yb, &ne);                        /* y - yb */
+    p = mist__two_prod_b(w, s < hi ? s : 0.0, &pe);        /* w s; s = inf: 0 */
+    f = mist__two_sum(n, p, &fe);
     fe += ne + pe;
-    n = w < MIST__C(0) ? f : n;                            /* the lower end */
-    ne = w < MIST__C(0) ? fe : ne;
-    n = MIST__FN(mist__two_sum)(n, ne, &ne);
+    n = w < 0.0 ? f : n;                                   /* the lower end */
+    ne = w < 0.0 ? fe : ne;
+    n = mist__two_sum(n, ne, &ne);
     hh = n * k->iH;                                        /* (n + ne) / H = hh + hl */
-    t = MIST__FN(mist__two_prod_b)(hh, k->H, &te);
+    t = mist__two_prod_b(hh, k->H, &te);
     hl = (((n - t) - te) + ne) * k->iH;
     /* (& and selects, no branch; every division has a safe divisor) */
-    ok = (hh >= -MIST__XLIM) & (hh <= MIST__XLIM) & (((s > lo) & (s < hi)) | ((s > hi) & (w > MIST__C(0))));
-    hh = ok ? hh : MIST__C(0);
+    ok = (hh >= -700.0) & (hh <= 700.0) & (((s > lo) & (s < hi)) | ((s > hi) & (w > 0.0)));
+    hh = ok ? hh : 0.0;
     e = MIST__FN(mist__hexp)(-hh, &om);
-    e = k->d0 * (e * (MIST__C(1) - hl));
-    aw = w < MIST__C(0) ? -w : w;
+    e = k->d0 * (e * (1.0 - hl));
+    aw = w < 0.0 ? -w : w;
     z = aw * s * k->iH;
-    (void)MIST__FN(mist__hexp)(z < MIST__XLIM ? -z : -MIST__XLIM, &om);   /* 1 - e^-z */
+    (void)MIST__FN(mist__hexp)(z < 700.0 ? -z : -700.0, &om);   /* 1 - e^-z */
     /* s (1 - e^-z) / z for z < 1, (H (1 - e^-z)) / |w| beyond (z >= 1:
      * w != 0), s at z = 0: one division */
-    t = (z < MIST__C(1) ? s : k->H) * om;
-    col = t / (z < MIST__C(1) ? (z > MIST__C(0) ? z : MIST__C(1)) : aw);
-    col = e * (z > MIST__C(0) ? col : s);
-    ok &= (e >= MIST__TMIN) & (e <= MIST__BIG) & (col > lo) & (col < hi);
+    t = (z < 1.0 ? s : k->H) * om;
+    col = t / (z < 1.0 ? (z > 0.0 ? z : 1.0) : aw);
+    col = e * (z > 0.0 ? col : s);
+    ok &= (e >= DBL_MIN) & (e <= DBL_MAX) & (col > lo) & (col < hi);
     for (c = 0; c < 3; ++c) {
-        MIST__T tau = k->st[c] * col;
-        ok &= (tau <= MIST__XLIM) & (!ins | (pM[c] == MIST__C(0)) | ((pM[c] > lo) & (pM[c] < hi)));
-        tr[c] = MIST__FN(mist__hexp)(tau < MIST__XLIM ? -tau : -MIST__XLIM, &om);
+        double tau = k->st[c] * col;
+        ok &= tau <= 700.0;
+#if MIST__DBL   /* (float's sanitised phase values all lie in {0} and (lo, hi)) */
+        ok &= !ins | (pM[c] == 0.0) | ((pM[c] > lo) & (pM[c] < hi));
+#endif
+        tr[c] = MIST__FN(mist__hexp)(tau < 700.0 ? -tau : -700.0, &om);
         if (ins) ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om / k->st[c];
     }
     return ok;
@@ -5112,19 +5112,21 @@ MIST__F int MIST__FN(mist__hfk_make)(const MIST__HFOG *fog, MIST__T d0, MIST__T 
                                      const int *sx, const MIST__T *sR, const MIST__T *sM,
                                      const MIST__T *E, const MIST__T *La, MIST__HFK *k)
 {
-    const MIST__T lo = MIST__C(MIST__DBL ? 1e-75 : 1e-9), hi = MIST__C(MIST__DBL ? 1e75 : 1e9);
-    int c, ok = !fog->sun_extinction && d0 > lo && d0 < hi && H > lo && H < hi;
-    k->H = H; k->iH = MIST__C(1) / H; k->d0 = d0;
+    const double lo = 1e-75, hi = 1e75;
+    int c, ok = !fog->sun_extinction & ((double)d0 > lo) & ((double)d0 < hi) & ((double)H > lo)
+                & ((double)H < hi);
+    k->H = (double)H; k->iH = 1.0 / (double)H; k->d0 = (double)d0;
     for (c = 0; c < 3; ++c) {
-        ok = ok && sx[c] == 0 && st[c] > lo && st[c] < hi
-             && (E[c] == MIST__C(0) || (E[c] > lo && E[c] < hi))
-             && (La[c] == MIST__C(0) || (La[c] > lo && La[c] < hi))
-             && (sR[c] == MIST__C(0) || (sR[c] > lo && sR[c] < hi))
-             && (sM[c] == MIST__C(0) || (sM[c] > lo && sM[c] < hi));
-        k->st[c] = st[c];
-        k->a[c] = La[c] * (sR[c] + sM[c]);
-        k->r[c] = E[c] * sR[c];
-        k->m[c] = E[c] * sM[c];
+        double e = (double)E[c], l = (double)La[c], r = (double)sR[c], m = (double)sM[c];
+        ok &= (sx[c] == 0) & ((double)st[c] > lo) & ((double)st[c] < hi);
+#if MIST__DBL   /* (float's sanitised values all lie in {0} and (lo, hi)) */
+        ok &= ((e == 0.0) | ((e > lo) & (e < hi))) & ((l == 0.0) | ((l > lo) & (l < hi)))
+              & ((r == 0.0) | ((r > lo) & (r < hi))) & ((m == 0.0) | ((m > lo) & (m < hi)));
+#endif
+        k->st[c] = (double)st[c];
+        k->a[c] = l * (double)(sR[c] + sM[c]);
+        k->r[c] = e * r;
+        k->m[c] = e * m;
     }
     return ok;
 }
@@ -5173,12 +5175,13 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
         }
         {   /* the common case: THE STRAIGHT PATH */
             MIST__HFK k;
-            MIST__T T[3], L[3] = { 0, 0, 0 }, pm[3];
-            for (c = 0; c < 3; ++c) pm[c] = pM;
+            double T[3], L[3] = { 0, 0, 0 }, pm[3];
+            for (c = 0; c < 3; ++c) pm[c] = (double)pM;
             if (MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k)
-                && MIST__FN(mist__hfast)(&k, origin.y, fog->base, w, length, pR, pm,
+                && MIST__FN(mist__hfast)(&k, (double)origin.y, (double)fog->base, (double)w,
+                                         (double)length, (double)pR, pm,
                                          inscatter != MIST__NULL, T, L)) {
-                for (c = 0; c < 3; ++c) { tr[c] = T[c]; ls[c] = L[c]; }
+                for (c = 0; c < 3; ++c) { tr[c] = (MIST__T)T[c]; ls[c] = (MIST__T)L[c]; }
                 goto out;
             }
         }
@@ -5297,13 +5300,15 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
                                                const MIST__RGB *background, MIST__RGB *out,
                                                size_t n)
 {
-    MIST__T st[3], sR[3], sM[3], E[3], La[3], d0 = 0, H = 0, tr[3][32], ls[3][32];
-    MIST__T y[32], w[32], s[32], pR[32], pM[32];
+    MIST__T st[3], sR[3], sM[3], E[3], La[3], d0 = 0, H = 0;
+    double tr[3][32], ls[3][32], y[32], w[32], s[32], pR[32], pM[32];
     int sx[3], ok[32], c, fast;
+    double yb = 0;
     MIST__HFK k;
     MIST__V3 l = { 0, 0, 1 };
     size_t i0, i;
     if (n == 0) return;
+    memset(&k, 0, sizeof k);
     fast = fog != MIST__NULL;
     if (fast) {
         d0 = MIST__FN(mist__pos)(fog->density); H = fog->scale_height;
@@ -5316,6 +5321,7 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
         fast = d0 > MIST__C(0) && H > MIST__C(0) && MIST__FN(mist__finite)(fog->base)
             && MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k);
         l = MIST__FN(mist__unit)(fog->sun_dir);
+        yb = (double)fog->base;
     }
     if (!fast) {
         for (i = 0; i < n; ++i)
@@ -5327,27 +5333,29 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
         for (j = 0; j < m; ++j) {           /* as mist__impl_hfog_eval */
             MIST__V3 v = MIST__FN(mist__unit)(dir[i0 + j]);
             MIST__T u = l.x * v.x + l.y * v.y + l.z * v.z;
-            w[j] = v.y < MIST__C(-1) ? MIST__C(-1) : (v.y > MIST__C(1) ? MIST__C(1) : v.y);
-            y[j] = origin[i0 + j].y;
-            s[j] = length[i0 + j];
-            pR[j] = MIST__FN(mist__impl_rayleigh_eval)(u);
-            pM[j] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
+            MIST__T wj = v.y < MIST__C(-1) ? MIST__C(-1) : (v.y > MIST__C(1) ? MIST__C(1) : v.y);
+            w[j] = (double)wj;
+            y[j] = (double)origin[i0 + j].y;
+            s[j] = (double)length[i0 + j];
+            pR[j] = (double)MIST__FN(mist__impl_rayleigh_eval)(u);
+            pM[j] = (double)MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
+            ok[j] = length[i0 + j] > MIST__C(0) && MIST__FN(mist__finite)(origin[i0 + j].y);
         }
         for (j = 0; j < 32; ++j) {          /* THE STRAIGHT PATH: vectorised */
-            MIST__T pm[3], t3[3], l3[3];
+            double pm[3], t3[3], l3[3];
             size_t q = j < m ? j : 0;
             pm[0] = pm[1] = pm[2] = pM[q];
-            ok[j] = MIST__FN(mist__hfast)(&k, y[q], fog->base, w[q], s[q], pR[q], pm, 1, t3, l3);
+            ok[j] &= MIST__FN(mist__hfast)(&k, y[q], yb, w[q], s[q], pR[q], pm, 1, t3, l3);
             for (c = 0; c < 3; ++c) { tr[c][j] = t3[c]; ls[c][j] = l3[c]; }
         }
         for (j = 0; j < m; ++j) {
             i = i0 + j;
-            if (ok[j] && s[j] > MIST__C(0) && MIST__FN(mist__finite)(y[j])) {
+            if (ok[j]) {
                 MIST__RGB b = background[i], r;
-                r.r = ls[0][j]; r.g = ls[1][j]; r.b = ls[2][j];
-                r.r += b.r * tr[0][j];
-                r.g += b.g * tr[1][j];
-                r.b += b.b * tr[2][j];
+                r.r = (MIST__T)ls[0][j]; r.g = (MIST__T)ls[1][j]; r.b = (MIST__T)ls[2][j];
+                r.r += b.r * (MIST__T)tr[0][j];
+                r.g += b.g * (MIST__T)tr[1][j];
+                r.b += b.b * (MIST__T)tr[2][j];
                 out[i] = r;
             } else
                 out[i] = MIST__FN(mist__impl_hfog_apply)(fog, origin[i], dir[i], length[i], background[i]);
