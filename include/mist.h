@@ -5341,11 +5341,11 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
             pM[j] = (double)MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
             ok[j] = length[i0 + j] > MIST__C(0) && MIST__FN(mist__finite)(origin[i0 + j].y);
         }
+        for (; j < 32; ++j) { y[j] = yb; w[j] = 0; s[j] = 1; pR[j] = pM[j] = 0; ok[j] = 0; }
         for (j = 0; j < 32; ++j) {          /* THE STRAIGHT PATH: vectorised */
             double pm[3], t3[3], l3[3];
-            size_t q = j < m ? j : 0;
-            pm[0] = pm[1] = pm[2] = pM[q];
-            ok[j] &= MIST__FN(mist__hfast)(&k, y[q], yb, w[q], s[q], pR[q], pm, 1, t3, l3);
+            pm[0] = pm[1] = pm[2] = pM[j];
+            ok[j] &= MIST__FN(mist__hfast)(&k, y[j], yb, w[j], s[j], pR[j], pm, 1, t3, l3);
             for (c = 0; c < 3; ++c) { tr[c][j] = t3[c]; ls[c][j] = l3[c]; }
         }
         for (j = 0; j < m; ++j) {
