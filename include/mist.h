@@ -5036,11 +5036,13 @@ typedef struct MIST__HFK {
 MIST__F MIST__HOT double MIST__FN(mist__hexp)(double x, double *om)
 {
     const double sh = 6755399441055744.0;
-    double kb = x * 1.44269504088896340736 + sh, k = kb - sh, r, q, r2, r4, sc, a, ae;
+    double kb = x * 1.44269504088896340736 + sh, k, r, q, r2, r4, sc, a, ae;
     uint64_t b, ks;
     memcpy(&ks, &sh, sizeof ks);
     memcpy(&b, &kb, sizeof b);
-    b = (b - ks + 1023u) << 52;
+    b -= ks;                                    /* k, two's complement */
+    k = (double)(int32_t)(uint32_t)(b & 0xffffffffu);   /* (not kb - sh: reassociable) */
+    b = (b + 1023u) << 52;
     memcpy(&sc, &b, sizeof b);
     r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
     r2 = r * r;
