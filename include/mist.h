@@ -5041,7 +5041,11 @@ MIST__F MIST__HOT double MIST__FN(mist__hexp)(double x, double *om)
     memcpy(&ks, &sh, sizeof ks);
     memcpy(&b, &kb, sizeof b);
     b -= ks;                                    /* k, two's complement */
-    k = (double)(int32_t)(uint32_t)(b & 0xffffffffu);   /* (not kb - sh: reassociable) */
+#if defined(MIST_ALLOW_FAST_MATH)   /* kb - sh may be folded to x / ln 2 there */
+    k = (double)(int32_t)(uint32_t)(b & 0xffffffffu);
+#else                               /* (the guard keeps it: and it vectorises) */
+    k = kb - sh;
+#endif
     b = (b + 1023u) << 52;
     memcpy(&sc, &b, sizeof b);
     r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
