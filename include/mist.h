@@ -5001,16 +5001,17 @@ MIST__F MIST__HOT int MIST__FN(mist__hlayer)(const MIST__HFOG *f, int c, MIST__T
 
 /* THE STRAIGHT PATH (mist__hfast): one ray in the common case, branch-free
  * (the batch forms vectorise it; the scalar functions take the same code,
- * so the two agree bit for bit).  A fog qualifies (mist__hfk_make) where
- * the sun is not dimmed, nothing was halved (mist__hlayer) and its
- * density, scale height and extinctions lie in (lo, hi) = 1e+-75 (float
- * 1e+-9), its lights and scatterings there or at 0; a ray where its lower
- * end's exponent h is within +-XLIM, density e^-h is normal, its length
- * in (lo, hi) or +inf going up, its column in (lo, hi), its phase values
- * 0 or in (lo, hi) and every tau <= XLIM.  Then no product leaves the
- * normal range (at most four factors in (lo, hi), 4 lg(1e9) = 119.6 <
- * 126 in float, and numbers in [e^-XLIM, 1]) and, with e^x = 2^k (1 + p)
- * (mist__hexp):
+ * so the two agree bit for bit), in double for both types (float's
+ * inputs are exact there, its results rounded once).  A fog qualifies
+ * (mist__hfk_make) where the sun is not dimmed, nothing was halved
+ * (mist__hlayer) and its density, scale height and extinctions lie in
+ * (lo, hi) = (1e-75, 1e75), its lights and scatterings there or at 0
+ * (every positive float does); a ray where its lower end's exponent h is
+ * within +-700, the density there e^-h normal, its length in (lo, hi) or
+ * beyond going up, its column in (lo, hi), its phase values 0 or in (lo,
+ * hi) and every tau <= 700.  Then no product leaves the normal range (at
+ * most five factors in (lo, hi), the rest in [e^-700, 1]) and, with
+ * e^x = 2^k (1 + p) (mist__hexp):
  *   C = density e^-h (1 - h_lo) s phi1(z),  z = |w| s / H  (s phi1(z) =
  *       (H/|w|)(1 - e^-z) for z >= 1: also the ray to infinity going up),
  *   T = e^x and 1 - T from one evaluation (x = -st C), within about an
