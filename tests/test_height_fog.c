@@ -20,7 +20,9 @@
  * +-0.5, +-1}, density factors at the camera e^-700..e^700 (double) and
  * e^-80..e^80 (float), lengths 0..+inf, extinction 0..large, H 1..1e4.
  * Results below the normal range (DBL_MIN / eps) cannot carry relative
- * precision and are compared absolutely.  Also the float e^x - 1 that the
+ * precision and are compared absolutely.  Random rays in the common case
+ * (test_common: the straight path of mist.h, sun and ambient lit, one
+ * extinction a channel) against the same quadrature.  Also the float e^x - 1 that the
  * float forms use (mist__expm1f) against expm1l (test_expm1), and its
  * frexp and ldexp on the bits against libm's (test_frexp_ldexp). */
 #include "mist.h"
