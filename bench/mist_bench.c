@@ -954,6 +954,48 @@ static double c_col_printedf(void) LOOP(float, 120.f / ray_df[i].y * expf(-ray_o
                                              * (1 - expf(-ray_df[i].y * ray_sf[i] / 120.f)))
 static double c_colf(void) LOOP(float, mist_hfog_columnf(hff, ray_of[i].y, ray_df[i].y, ray_sf[i]))
 static double c_col(void)  LOOP(double, mist_hfog_column(hfd, ray_od[i].y, ray_dd[i].y, ray_sd[i]))
+/* a free-flight distance (channel g, xi from the table, tmax the ray's
+ * length): against the closed-form inversion of eq. 14 typed in as
+ * printed, t = -(H/w) ln(1 - w e^(y0/H) (-ln(1 - xi)) / (H st)), with its
+ * two tests (it escapes: the logarithm's argument <= 0; beyond tmax) */
+#define SD_PRINTED(T, EXP, LOG, F, O, D, S, X) {                                     \
+    T st_ = F[0].rayleigh_ext.g + F[0].mie_ext.g, H_ = F[0].scale_height;             \
+    T a_ = 1 - D.y * -LOG(1 - X) * EXP((O.y - F[0].base) / H_) / (H_ * st_), t_;      \
+    t_ = a_ > 0 ? -H_ / D.y * LOG(a_) : (T)INFINITY;                                   \
+    v_ = t_ <= S ? t_ : (T)INFINITY; }
+static float sd_printedf(int i)
+{
+    float v_;
+    SD_PRINTED(float, expf, logf, hff, ray_of[i], ray_df[i], ray_sf[i], xf[(i * 17 + 1) % N])
+    return v_;
+}
+static double sd_printed(int i)
+{
+    double v_;
+    SD_PRINTED(double, exp, log, hfd, ray_od[i], ray_dd[i], ray_sd[i], xd[(i * 17 + 1) % N])
+    return v_;
+}
+static double c_sd_printedf(void) LOOP(float, sd_printedf(i))
+static double c_sd_printed(void)  LOOP(double, sd_printed(i))
+static double c_sdf(void) LOOP(float, mist_hfog_sample_distancef(hff, ray_of[i], ray_df[i],
+                                                                ray_sf[i], 1, xf[(i * 17 + 1) % N]))
+static double c_sd(void)  LOOP(double, mist_hfog_sample_distance(hfd, ray_od[i], ray_dd[i],
+                                                                ray_sd[i], 1, xd[(i * 17 + 1) % N]))
+static double c_odf(void) RGBLOOP(float, mist_rgbf,
+                                  mist_hfog_optical_depthf(hff, ray_of[i], ray_df[i], ray_sf[i]))
+static double c_od(void)  RGBLOOP(double, mist_rgb,
+                                  mist_hfog_optical_depth(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
+static void sd_rows(void)
+{
+    printf("free-flight distances (one channel, xi uniform, tmax the ray's length):\n");
+    row("eq. 14 inverted as printed (float)", c_sd_printedf, NULL, NULL);
+    row("mist_hfog_sample_distancef", c_sdf, "printed", c_sd_printedf);
+    row("eq. 14 inverted as printed (double)", c_sd_printed, NULL, NULL);
+    row("mist_hfog_sample_distance", c_sd, "printed", c_sd_printed);
+    row("mist_hfog_optical_depthf (3 channels)", c_odf, "printed", c_sd_printedf);
+    row("mist_hfog_optical_depth (3 channels)", c_od, "printed", c_sd_printed);
+}
+
 /* a ray-march step: against the constant-coefficient step a renderer
  * might use instead, s/k (1 - e^(-k L)) with the mean k and s */
 static float seg_constf(float k0, float k1, float s0, float s1, float L)
@@ -1037,6 +1079,7 @@ static void hfog_rows(void)
     row("mist_hfog_apply", c_hf_ap, "printed", base);
     hfog_deep = 0;
     hfog_setup();
+    sd_rows();
     base = c_col_printedf;
     row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
     row("mist_hfog_columnf", c_colf, "printed", base);
@@ -1365,6 +1408,13 @@ int main(int argc, char **argv)
            "ratio to the baseline named\n\n", REPS, N);
     if (argc > 1 && strcmp(argv[1], "tab") == 0) {   /* ./mist_bench tab: the tables alone */
         tab_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "hfog_path") == 0) {   /* the free-flight distances alone */
+        fog_f = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+        fog_d = mist_fog_make(0.988, 0.556, 22.0, 0.482);
+        hfog_setup();
+        sd_rows();
         return 0;
     }
     if (argc > 1 && strcmp(argv[1], "hfog") == 0) {  /* ./mist_bench hfog: the height fog alone */

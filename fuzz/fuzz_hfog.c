@@ -34,6 +34,7 @@
     /* every field's bits, in struct order, then the ray, background and w */          \
     static void fz_direct_##S(mi_bytes *b, HFOG *f, V3 *o, V3 *d, T *len, RGB *bg, T *w) \
     {                                                                                  \
+        memset(f, 0, sizeof *f);                                                       \
         f->base = fz_raw_##S(b); f->density = fz_raw_##S(b);                           \
         f->scale_height = fz_raw_##S(b);                                               \
         f->rayleigh_scat.r = fz_raw_##S(b); f->rayleigh_scat.g = fz_raw_##S(b);         \

@@ -1702,6 +1702,7 @@ MI_INLINE void MI_F(mi_gen_hfog)(mi_src *src, MI_HFOG *f, MI_V3 *o, MI_V3 *d, MI
     int wild = MI_FAST ? 0 : (int)(m % 4), k;      /* 0: realistic ... 3: anything */
     MI_T *rgb[6], ex;
 #define MI_WILD(bit) (wild == 3 || (wild > 0 && ((m >> (8 + (bit))) & 3) == 0))
+    memset(f, 0, sizeof *f);       /* the optional fields (up, mie_prepared, mie_tab) */
     f->base = MI_WILD(0) ? MI_F(mi_draw)(src, MI_REAL) : (MI_T)(200 * mi_src_unif(src) - 100);
     f->density = MI_WILD(2) ? MI_F(mi_draw)(src, MI_POS) : (MI_T)mi_src_log(src, 1e-3, 10);
     f->scale_height = MI_WILD(4) ? MI_F(mi_draw)(src, MI_POS)

@@ -100,6 +100,8 @@ MIST_FUNC double use_all(double x)
         o.x = 0; o.y = x; o.z = 0;
         of.x = 0; of.y = xf; of.z = 0;
         for (k = 0; k < 2; ++k) {
+            memset(&hf[k], 0, sizeof hf[k]);     /* up, mie_prepared, mie_tab: none */
+            memset(&hff[k], 0, sizeof hff[k]);
             hf[k].base = 0; hf[k].density = 1; hf[k].scale_height = 1000.0 * (k + 1);
             hf[k].rayleigh_scat.r = hf[k].rayleigh_scat.g = hf[k].rayleigh_scat.b = 1e-5;
             hf[k].rayleigh_ext = hf[k].rayleigh_scat;
@@ -121,6 +123,9 @@ MIST_FUNC double use_all(double x)
         s += mist_hfog_inscatter(&hf[0], o, wi, 100.0).r;
         s += mist_hfog_apply(&hf[0], o, wi, 100.0, t).g;
         mist_hfog_layers_eval(hf, 2, o, wi, 100.0, 4, &t, &l, &b); s += t.r + l.r + b.r;
+        s += mist_hfog_extinction(&hf[0], o).g;
+        s += mist_hfog_optical_depth(&hf[0], o, wi, 100.0).r;
+        s += mist_hfog_sample_distance(&hf[0], o, wi, 100.0, 1, 0.5);
         s += mist_segment_linear(0.1, 0.2, 1.0, 2.0, x, &tr) + tr;
         sf += mist_hfog_columnf(&hff[0], xf, 0.5f, 100.0f);
         mist_hfog_evalf(&hff[0], of, wif, 100.0f, &tf, &lf); sf += tf.r + lf.g;
@@ -134,6 +139,9 @@ MIST_FUNC double use_all(double x)
             mist_hfog_apply_n(&hf[0], &o, &wi, &len, &t, &t, 1); s += t.r;
             mist_hfog_apply_nf(&hff[0], &of, &wif, &lenf, &tf, &tf, 1); sf += tf.r;
         }
+        sf += mist_hfog_extinctionf(&hff[0], of).g;
+        sf += mist_hfog_optical_depthf(&hff[0], of, wif, 100.0f).r;
+        sf += mist_hfog_sample_distancef(&hff[0], of, wif, 100.0f, 1, 0.5f);
         sf += mist_segment_linearf(0.1f, 0.2f, 1.0f, 2.0f, xf, &trf) + trf;
     }
     return s + (double)sf;
