@@ -23,7 +23,8 @@
  * stream run over k times: MIN_S), with the spread (min..max of the
  * repetitions); a ratio is the median over 15 turns of one repetition of
  * the function and one of its baseline (measure_vs).  Run: ./build/mist_bench  (see README.md;
- * ./build/mist_bench tab: the tabulated phase functions alone). */
+ * ./build/mist_bench tab: the tabulated phase functions alone; hfog: the
+ * height fog alone). */
 #define _POSIX_C_SOURCE 199309L
 #include "mist.h"
 #include "mist_mie.h"
@@ -934,6 +935,10 @@ static mist_vec3  ray_od[N], ray_dd[N];
 static float ray_sf[N];
 static int hfog_deep;   /* 1: rays go on below the base (to y = -1500), into fog e^12 denser */
 static double ray_sd[N];
+static mist_rgbf bg_f = { 1, 1, 1 };
+static mist_rgb  bg_d = { 1, 1, 1 };
+static mist_rgbf bgs_f[N];
+static mist_rgb  bgs_d[N];
 #define HFOG_INIT(F, T)                                                        \
     F[0].base = 0; F[0].density = 1; F[0].scale_height = 120;                  \
     F[0].rayleigh_scat.r = (T)5.8e-6; F[0].rayleigh_scat.g = (T)1.35e-5;       \
@@ -965,6 +970,7 @@ static void hfog_setup(void)
         ray_df[i].x = (float)ray_dd[i].x; ray_df[i].y = (float)ray_dd[i].y;
         ray_df[i].z = (float)ray_dd[i].z;
         ray_sf[i] = (float)ray_sd[i];
+        bgs_f[i] = bg_f; bgs_d[i] = bg_d;
     }
 }
 /* eq. 22-23 for one ray, three channels, background 1 */
@@ -993,12 +999,17 @@ static double c_hf_inf(void) RGBLOOP(float, mist_rgbf,
                                      mist_hfog_inscatterf(hff, ray_of[i], ray_df[i], ray_sf[i]))
 static double c_hf_in(void)  RGBLOOP(double, mist_rgb,
                                      mist_hfog_inscatter(hfd, ray_od[i], ray_dd[i], ray_sd[i]))
-static mist_rgbf bg_f = { 1, 1, 1 };
-static mist_rgb  bg_d = { 1, 1, 1 };
 static double c_hf_apf(void) RGBLOOP(float, mist_rgbf,
                                      mist_hfog_applyf(hff, ray_of[i], ray_df[i], ray_sf[i], bg_f))
 static double c_hf_ap(void)  RGBLOOP(double, mist_rgb,
                                      mist_hfog_apply(hfd, ray_od[i], ray_dd[i], ray_sd[i], bg_d))
+/* the batch form over the same rays (a fog pass), against its scalar loop */
+static mist_rgbf out_rgbf[N];
+static mist_rgb  out_rgb[N];
+static double c_hf_apnf(void) { mist_hfog_apply_nf(hff, ray_of, ray_df, ray_sf, bgs_f, out_rgbf, N);
+                                return out_rgbf[N / 2].g; }
+static double c_hf_apn(void)  { mist_hfog_apply_n(hfd, ray_od, ray_dd, ray_sd, bgs_d, out_rgb, N);
+                                return out_rgb[N / 2].g; }
 #define EVLOOP(T, RGB, FN, F, O, D, S) { T s_ = 0; int i; for (i = 0; i < N; ++i) { RGB t_, l_; \
     FN(F, O[i], D[i], S[i], &t_, &l_); s_ += t_.r + l_.g; } return s_; }
 static double c_hf_evf(void) EVLOOP(float, mist_rgbf, mist_hfog_evalf, hff, ray_of, ray_df, ray_sf)
@@ -1134,6 +1145,49 @@ static void compact_rows(void)
     }
 }
 
+/* the height fog's rows (./mist_bench hfog: these alone) */
+static void hfog_rows(void)
+{
+    bench_fn base;
+    hfog_setup();
+    printf("\nHeight fog [I18], per ray (three channels), rays ending on the ground "
+           "(the fog's base):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_transmittancef", c_hf_trf, "printed", base);
+    row("mist_hfog_inscatterf", c_hf_inf, "printed", base);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    row("mist_hfog_evalf", c_hf_evf, "printed", base);
+    row("mist_hfog_apply_nf (batch)", c_hf_apnf, "printed", base);
+    row_speedup("mist_hfog_apply_nf (batch)", c_hf_apnf, c_hf_apf);
+    row("mist_hfog_layers_evalf (2, 8 pieces)", c_hf_lyf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_transmittance", c_hf_tr, "printed", base);
+    row("mist_hfog_inscatter", c_hf_in, "printed", base);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    row("mist_hfog_eval", c_hf_ev, "printed", base);
+    row("mist_hfog_apply_n (batch)", c_hf_apn, "printed", base);
+    row_speedup("mist_hfog_apply_n (batch)", c_hf_apn, c_hf_ap);
+    row("mist_hfog_layers_eval (2, 8 pieces)", c_hf_ly, "printed", base);
+    hfog_deep = 1;
+    hfog_setup();
+    printf("rays going on below the ground, to y = -1500 (fog up to e^12 denser):\n");
+    base = c_hf_printedf;
+    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
+    row("mist_hfog_applyf", c_hf_apf, "printed", base);
+    base = c_hf_printed;
+    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
+    row("mist_hfog_apply", c_hf_ap, "printed", base);
+    hfog_deep = 0;
+    hfog_setup();
+    sd_rows();
+    base = c_col_printedf;
+    row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
+    row("mist_hfog_columnf", c_colf, "printed", base);
+    row("mist_hfog_column", c_col, "printed", base);
+}
+
 static void coverage_rows(void)
 {
     bench_fn base;
@@ -1211,38 +1265,7 @@ static void coverage_rows(void)
     row("mist_phase_sample_dirf (Draine)", c_ph_dirf, "mist_phase_samplef", b_phase_draine_samplef);
     row("mist_phase_sample_dir  (Draine)", c_ph_dir, "mist_phase_sample", b_phase_draine_sample);
 
-    printf("\nHeight fog [I18], per ray (three channels), rays ending on the ground "
-           "(the fog's base):\n");
-    base = c_hf_printedf;
-    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
-    row("mist_hfog_transmittancef", c_hf_trf, "printed", base);
-    row("mist_hfog_inscatterf", c_hf_inf, "printed", base);
-    row("mist_hfog_applyf", c_hf_apf, "printed", base);
-    row("mist_hfog_evalf", c_hf_evf, "printed", base);
-    row("mist_hfog_layers_evalf (2, 8 pieces)", c_hf_lyf, "printed", base);
-    base = c_hf_printed;
-    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
-    row("mist_hfog_transmittance", c_hf_tr, "printed", base);
-    row("mist_hfog_inscatter", c_hf_in, "printed", base);
-    row("mist_hfog_apply", c_hf_ap, "printed", base);
-    row("mist_hfog_eval", c_hf_ev, "printed", base);
-    row("mist_hfog_layers_eval (2, 8 pieces)", c_hf_ly, "printed", base);
-    hfog_deep = 1;
-    hfog_setup();
-    printf("rays going on below the ground, to y = -1500 (fog up to e^12 denser):\n");
-    base = c_hf_printedf;
-    row("eq. 22-23 as printed (float)", c_hf_printedf, NULL, NULL);
-    row("mist_hfog_applyf", c_hf_apf, "printed", base);
-    base = c_hf_printed;
-    row("eq. 22-23 as printed (double)", c_hf_printed, NULL, NULL);
-    row("mist_hfog_apply", c_hf_ap, "printed", base);
-    hfog_deep = 0;
-    hfog_setup();
-    sd_rows();
-    base = c_col_printedf;
-    row("eq. 14 column as printed (float)", c_col_printedf, NULL, NULL);
-    row("mist_hfog_columnf", c_colf, "printed", base);
-    row("mist_hfog_column", c_col, "printed", base);
+    hfog_rows();
     base = c_seg_constf;
     row("constant-coefficient step (float)", c_seg_constf, NULL, NULL);
     row("mist_segment_linearf", c_segf, "constant", base);
@@ -1503,6 +1526,12 @@ int main(int argc, char **argv)
         fog_d = mist_fog_make(0.988, 0.556, 22.0, 0.482);
         hfog_setup();
         sd_rows();
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "hfog") == 0) {  /* ./mist_bench hfog: the height fog alone */
+        fog_f = mist_fog_makef(0.988f, 0.556f, 22.0f, 0.482f);
+        fog_d = mist_fog_make(0.988, 0.556, 22.0, 0.482);
+        hfog_rows();
         return 0;
     }
 

@@ -16,7 +16,8 @@
  * (MIST__MIXC) and the Draine blocks of 32; every path (HG, Draine,
  * mirror) reached, counted.  There too the compact form of each fog
  * (mist_phasec_eval: mist_phase_eval's values bit for bit, bad input too;
- * mist_phasec_sample of bad xi that of the clamped xi).
+ * mist_phasec_sample of bad xi that of the clamped xi).  The height fog's
+ * mist_hfog_apply_n (see test_hfog_batch) and the float forms (_nf).
  *
  * Inputs: random values over and beyond the domain, and the edges and bad
  * input of DOMAIN AND BAD INPUT (NaN, +-inf, +-0, +-1 and their neighbours,
@@ -376,6 +377,125 @@ static int mix_##T(T gh, T gd, T a, T w, mt_rng *r, long cnt[3])                
 DEFINE_TYPE(double, , nextafter)
 DEFINE_TYPE(float, f, nextafterf)
 
+/* The height fog's batch form mist_hfog_apply_n (_nf): each ray as
+ * mist_hfog_apply gives it (bit for bit; within FMA_ULPS where the
+ * compiler may contract), for fogs its straight path takes and fogs it
+ * does not (dimmed sun, a halved extinction, coefficients, density or
+ * scale height out of its range, NULL, no fog), rays over and beyond the
+ * domain (level, nearly level, to infinity up and down, NaN and negative
+ * lengths, zero and NaN directions, origins far below and above), lengths
+ * 0 (NULL arrays), 1, 31, 32, 33, 100, in place (out = background), no
+ * element past n written. */
+#define HFOG_BATCH(T, S, V3, RGB, HF)                                              \
+static void hfog_fog_##T(HF *f, int kind)                                         \
+{                                                                                \
+    memset(f, 0, sizeof *f);                                                     \
+    f->base = (T)12.5; f->density = (T)1.5; f->scale_height = (T)120;            \
+    f->rayleigh_scat.r = (T)5.8e-6; f->rayleigh_scat.g = (T)1.35e-5;             \
+    f->rayleigh_scat.b = (T)3.31e-5; f->rayleigh_ext = f->rayleigh_scat;         \
+    f->mie_scat.r = f->mie_scat.g = f->mie_scat.b = (T)2e-3;                     \
+    f->mie_ext.r = (T)2.2e-3; f->mie_ext.g = (T)2.3e-3; f->mie_ext.b = (T)2.5e-3; \
+    f->mie_phase = CAT(mist_fog_make, S)((T)0.9, (T)0.5, 17, (T)0.4);           \
+    f->sun_dir.x = (T)0.3; f->sun_dir.y = (T)0.5; f->sun_dir.z = (T)0.8;         \
+    f->sun.r = 1; f->sun.g = (T)0.9; f->sun.b = (T)0.8;                          \
+    f->ambient.r = (T)0.1; f->ambient.g = (T)0.12; f->ambient.b = (T)0.15;       \
+    switch (kind) {                                                              \
+    case 1: f->sun_extinction = 1; break;                                        \
+    case 2: f->mie_ext.g = (T)INFINITY; break;          /* halved */             \
+    case 3: f->sun.b = (T)1e-30; f->ambient.r = (T)NAN; break;                    \
+    case 4: f->density = (T)1e30; f->mie_scat.r = 0; break;                      \
+    case 5: f->scale_height = (T)INFINITY; break;                                \
+    case 6: f->density = 0; break;                                               \
+    case 7: f->rayleigh_ext.r = f->rayleigh_scat.r = f->mie_ext.r = f->mie_scat.r = 0; break; \
+    case 8: f->scale_height = (T)1e-3; f->sun_dir.y = 0; break;                  \
+    default: break;                                                              \
+    }                                                                            \
+}                                                                                \
+static void hfog_rays_##T(mt_rng *r, V3 *o, V3 *d, T *s, RGB *b, int n)          \
+{                                                                                \
+    int i;                                                                       \
+    for (i = 0; i < n; ++i) {                                                    \
+        double u = mt_uniform(r), z = 2 * mt_uniform(r) - 1, a = 6.283 * mt_uniform(r); \
+        o[i].x = (T)(100 * u); o[i].y = (T)(-200 + 1000 * mt_uniform(r)); o[i].z = 0; \
+        d[i].x = (T)(sqrt(1 - z * z) * cos(a)); d[i].y = (T)z;                   \
+        d[i].z = (T)(sqrt(1 - z * z) * sin(a));                                  \
+        s[i] = (T)pow(10, -2 + 5 * mt_uniform(r));                               \
+        b[i].r = (T)mt_uniform(r); b[i].g = (T)(10 * mt_uniform(r)); b[i].b = 1; \
+        switch (i % 23) {                                                        \
+        case 1: d[i].y = 0; break;                                               \
+        case 2: d[i].y = (T)1e-9; break;                                         \
+        case 3: s[i] = (T)INFINITY; break;                                       \
+        case 4: s[i] = (T)INFINITY; d[i].y = -d[i].y; break;                     \
+        case 5: s[i] = (T)NAN; break;                                            \
+        case 6: s[i] = -1; break;                                                \
+        case 7: s[i] = 0; break;                                                 \
+        case 8: d[i].x = d[i].y = d[i].z = 0; break;                             \
+        case 9: d[i].y = (T)NAN; break;                                          \
+        case 10: o[i].y = (T)-1e5; break;                                        \
+        case 11: o[i].y = (T)1e6; break;                                         \
+        case 12: o[i].y = (T)INFINITY; break;                                    \
+        case 13: d[i].x *= 3; d[i].y *= 3; d[i].z *= 3; break;                   \
+        case 14: s[i] = (T)1e30; break;                                          \
+        default: break;                                                          \
+        }                                                                        \
+    }                                                                            \
+}                                                                                \
+static long hfog_check_##T(mt_rng *r, int kind, int n, int inplace, const HF *alt) \
+{                                                                                \
+    static V3 o[104], d[104];                                                    \
+    static T s[104];                                                             \
+    static RGB b[104], y[104], b0[104];                                          \
+    HF f;                                                                        \
+    long bad = 0;                                                                \
+    int i;                                                                       \
+    hfog_fog_##T(&f, kind);                                                      \
+    hfog_rays_##T(r, o, d, s, b, n + 4);                                         \
+    memcpy(b0, b, sizeof b);                                                     \
+    for (i = 0; i < n + 4; ++i) { y[i].r = y[i].g = y[i].b = (T)-7; }            \
+    if (n == 0)                                                                  \
+        CAT(mist_hfog_apply_n, S)(kind == 9 ? NULL : &f, NULL, NULL, NULL, NULL, NULL, 0); \
+    else if (inplace)                                                            \
+        CAT(mist_hfog_apply_n, S)(kind == 9 ? NULL : &f, o, d, s, b, b, (size_t)n); \
+    else                                                                         \
+        CAT(mist_hfog_apply_n, S)(kind == 9 ? NULL : &f, o, d, s, b, y, (size_t)n); \
+    for (i = 0; i < n + 4; ++i) {                                                \
+        RGB want = CAT(mist_hfog_apply, S)(alt ? alt : kind == 9 ? NULL : &f, o[i], d[i], s[i], b0[i]); \
+        RGB got = inplace ? b[i] : y[i];                                         \
+        if (i >= n) bad += inplace ? memcmp(&b[i], &b0[i], sizeof b[i]) != 0     \
+                                   : !(y[i].r == (T)-7 && y[i].g == (T)-7 && y[i].b == (T)-7); \
+        else bad += !same_##T(got.r, want.r) + !same_##T(got.g, want.g) + !same_##T(got.b, want.b); \
+    }                                                                            \
+    return bad;                                                                  \
+}
+HFOG_BATCH(double, , mist_vec3, mist_rgb, mist_hfog)
+HFOG_BATCH(float, f, mist_vec3f, mist_rgbf, mist_hfogf)
+
+static void test_hfog_batch(mt_rng *r)
+{
+    static const int ns[] = { 0, 1, 31, 32, 33, 100 };
+    long bad = 0, cases = 0;
+    int kind, ni, ip;
+    mist_hfog alt;
+    mist_hfogf altf;
+    for (kind = 0; kind < 10; ++kind)
+        for (ni = 0; ni < 6; ++ni)
+            for (ip = 0; ip < 2; ++ip) {
+                bad += hfog_check_double(r, kind, ns[ni], ip, NULL)
+                     + hfog_check_float(r, kind, ns[ni], ip, NULL);
+                cases += 2;
+            }
+    mt_check(bad == 0, "mist_hfog_apply_n(f): %ld values of %ld calls not the scalar function's",
+             bad, cases);
+    /* control: against a fog denser by 2^-40 (float 2^-14), more than
+     * FMA_ULPS moves the results, the comparison must see it */
+    hfog_fog_double(&alt, 0);
+    alt.density *= 1 + 0x1p-40;
+    hfog_fog_float(&altf, 0);
+    altf.density *= 1 + 0x1p-14f;
+    mt_check(hfog_check_double(r, 0, 100, 0, &alt) > 0 && hfog_check_float(r, 0, 100, 0, &altf) > 0,
+             "control: a fog denser by 2^-40 (float 2^-14) must differ");
+}
+
 int main(void)
 {
     mt_rng r = { 20261126 };
@@ -468,6 +588,7 @@ int main(void)
                  && !mist__phase_near1f(nextafterf(0.999f, 0)),
                  "the unprepared sampler's range starts at |g| = 0.999");
     }
+    test_hfog_batch(&r);
     /* negative controls: the comparison sees a change of one ulp more than
      * it allows (one ulp without FMA hardware), and the sign of 0 */
     {

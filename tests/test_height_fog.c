@@ -20,7 +20,9 @@
  * +-0.5, +-1}, density factors at the camera e^-700..e^700 (double) and
  * e^-80..e^80 (float), lengths 0..+inf, extinction 0..large, H 1..1e4.
  * Results below the normal range (DBL_MIN / eps) cannot carry relative
- * precision and are compared absolutely.  Also the float e^x - 1 that the
+ * precision and are compared absolutely.  Random rays in the common case
+ * (test_common: the straight path of mist.h, sun and ambient lit, one
+ * extinction a channel) against the same quadrature.  Also the float e^x - 1 that the
  * float forms use (mist__expm1f) against expm1l (test_expm1), and its
  * frexp and ldexp on the bits against libm's (test_frexp_ldexp). */
 #include "mist.h"
@@ -627,6 +629,121 @@ static void test_grid(int is_float)
                 }
     printf("grid %s: worst T %.2f, L %.2f, dimmed-sun L %.2f  [eps (1 + tau)]  (%.1f s)\n",
            is_float ? "float" : "double", wo.T, wo.L, wo.Ls, (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
+/* Random rays in the common case (mist.h's THE STRAIGHT PATH: moderate
+ * heights, coefficients and lights, the sun not dimmed; some level, some
+ * to infinity going up), sun and ambient together, each channel its own
+ * extinction, against the quadrature: the same bar, the worst reported. */
+static void test_common(int is_float, long n)
+{
+    mt_rng g;
+    long it;
+    double eps = is_float ? 0x1p-24 : 0x1p-53, wT = 0, wL = 0;
+    clock_t t0 = clock();
+    g.s = 0x2545f4914f6cdd1dULL + (uint64_t)is_float;
+    for (it = 0; it < n; ++it) {
+        double H = pow(10, 4 * mt_uniform(&g)), h = -40 + 80 * mt_uniform(&g), base = -100 + 200 * mt_uniform(&g);
+        double w = 2 * mt_uniform(&g) - 1, s, y, wx, ang, lx, ly, u, pr, pm;
+        double ext[3], sr[3], sm[3], E[3], La[3];
+        double got_T[3], got_L[3];
+        ref_t r;
+        int c;
+        mist_fog ph = mist_fog_make(-0.5 + 1.4 * mt_uniform(&g), 0.6 * mt_uniform(&g), 20 * mt_uniform(&g),
+                                    mt_uniform(&g));
+        if (it % 10 == 1) w = 0;
+        if (it % 10 == 2) w = (mt_uniform(&g) - 0.5) * 1e-9;
+        s = it % 10 == 3 && w > 0 ? INFINITY : H * pow(10, -3 + 6 * mt_uniform(&g));
+        y = base + h * H;
+        ang = 0.05 + 1.5 * mt_uniform(&g);
+        lx = cos(ang); ly = sin(ang);
+        for (c = 0; c < 3; ++c) {
+            ext[c] = pow(10, -6 + 6 * mt_uniform(&g)) / H * (1 + 10 * mt_uniform(&g));
+            sr[c] = ext[c] * 0.3 * mt_uniform(&g);
+            sm[c] = (ext[c] - sr[c]) * mt_uniform(&g);
+            E[c] = 10 * mt_uniform(&g); La[c] = mt_uniform(&g);
+        }
+        if (is_float) {                   /* the values the float code sees */
+            y = (float)y; w = (float)w; s = (float)s; H = (float)H; base = (float)base;
+            lx = (float)lx; ly = (float)ly;
+            for (c = 0; c < 3; ++c) { ext[c] = (float)ext[c]; sr[c] = (float)sr[c]; sm[c] = (float)sm[c];
+                                      E[c] = (float)E[c]; La[c] = (float)La[c]; }
+            ph = mist_fog_make((float)ph.g_hg, (float)ph.g_d, (float)ph.alpha, (float)ph.w_d);
+        }
+        wx = sqrt((1 - w) * (1 + w));
+        if (is_float) wx = (float)wx;
+        memset(&r, 0, sizeof r);
+        r.y = y; r.w = w; r.yb = base; r.H = H; r.d0 = 1; r.nsig = 3;
+        /* the extinction the code sees: Rayleigh's sr plus Mie's ext - sr,
+         * each rounded to T; the reference adds them exactly */
+        for (c = 0; c < 3; ++c)
+            r.sig[c] = is_float ? (LD)(float)sr[c] + (LD)(float)(ext[c] - sr[c]) : (LD)sr[c] + (LD)(ext[c] - sr[c]);
+        ref_run(&r, s);
+        if (!is_float) {
+            mist_hfog f;
+            mist_vec3 o, d;
+            mist_rgb t, l;
+            memset(&f, 0, sizeof f);
+            f.base = base; f.density = 1; f.scale_height = H; f.mie_phase = ph;
+            f.rayleigh_scat.r = sr[0]; f.rayleigh_scat.g = sr[1]; f.rayleigh_scat.b = sr[2];
+            f.rayleigh_ext = f.rayleigh_scat;
+            f.mie_ext.r = ext[0] - sr[0]; f.mie_ext.g = ext[1] - sr[1]; f.mie_ext.b = ext[2] - sr[2];
+            f.mie_scat.r = sm[0]; f.mie_scat.g = sm[1]; f.mie_scat.b = sm[2];
+            f.sun.r = E[0]; f.sun.g = E[1]; f.sun.b = E[2];
+            f.ambient.r = La[0]; f.ambient.g = La[1]; f.ambient.b = La[2];
+            f.sun_dir.x = lx; f.sun_dir.y = ly; f.sun_dir.z = 0;
+            o.x = 3; o.y = y; o.z = -7; d.x = wx; d.y = w; d.z = 0;
+            mist_hfog_eval(&f, o, d, s, &t, &l);
+            got_T[0] = t.r; got_T[1] = t.g; got_T[2] = t.b;
+            got_L[0] = l.r; got_L[1] = l.g; got_L[2] = l.b;
+        } else {
+            mist_hfogf f;
+            mist_vec3f o, d;
+            mist_rgbf t, l;
+            memset(&f, 0, sizeof f);
+            f.base = (float)base; f.density = 1; f.scale_height = (float)H;
+            f.mie_phase = mist_fog_makef((float)ph.g_hg, (float)ph.g_d, (float)ph.alpha, (float)ph.w_d);
+            f.rayleigh_scat.r = (float)sr[0]; f.rayleigh_scat.g = (float)sr[1]; f.rayleigh_scat.b = (float)sr[2];
+            f.rayleigh_ext = f.rayleigh_scat;
+            f.mie_ext.r = (float)(ext[0] - sr[0]); f.mie_ext.g = (float)(ext[1] - sr[1]);
+            f.mie_ext.b = (float)(ext[2] - sr[2]);
+            f.mie_scat.r = (float)sm[0]; f.mie_scat.g = (float)sm[1]; f.mie_scat.b = (float)sm[2];
+            f.sun.r = (float)E[0]; f.sun.g = (float)E[1]; f.sun.b = (float)E[2];
+            f.ambient.r = (float)La[0]; f.ambient.g = (float)La[1]; f.ambient.b = (float)La[2];
+            f.sun_dir.x = (float)lx; f.sun_dir.y = (float)ly; f.sun_dir.z = 0;
+            o.x = 3; o.y = (float)y; o.z = -7; d.x = (float)wx; d.y = (float)w; d.z = 0;
+            mist_hfog_evalf(&f, o, d, (float)s, &t, &l);
+            got_T[0] = t.r; got_T[1] = t.g; got_T[2] = t.b;
+            got_L[0] = l.r; got_L[1] = l.g; got_L[2] = l.b;
+        }
+        /* the phase values as the code sees them: mist's phase functions
+         * (tested on their own) at the cosine it computes, in its type; a
+         * peaked lobe turns u's rounding into tens of eps of p */
+        if (is_float) {
+            float uf = (float)lx * (float)wx + (float)ly * (float)w;
+            mist_fogf phf = mist_fog_makef((float)ph.g_hg, (float)ph.g_d, (float)ph.alpha, (float)ph.w_d);
+            pr = mist_rayleigh_evalf(uf); pm = mist_fog_evalf(phf, uf);
+        } else {
+            u = lx * wx + ly * w;
+            pr = mist_rayleigh_eval(u); pm = mist_fog_eval(ph, u);
+        }
+        for (c = 0; c < 3; ++c) {
+            LD tau = r.sig[c] * r.C, Tref = r.stopped ? 0 : expl(-tau);
+            LD src = (LD)La[c] * ((LD)sr[c] + sm[c]) + (LD)E[c] * ((LD)sr[c] * pr + (LD)sm[c] * pm);
+            LD Lref = src * r.I[c];
+            double eT, eL;
+            if (r.stopped) tau = 900;
+            eT = rel_units(got_T[c], Tref, eps, tau, is_float ? FLT_MIN / 0x1p-24 : DBL_MIN / 0x1p-53);
+            eL = rel_units(got_L[c], Lref, eps, tau, is_float ? FLT_MIN / 0x1p-24 : DBL_MIN / 0x1p-53);
+            if (eT > wT) wT = eT;
+            if (eL > wL) wL = eL;
+            mt_check(eT <= BAR && eL <= BAR, "common %s H=%g h=%g w=%g s=%g ext=%g: T %.17g ref %.17Lg "
+                     "(%.2f), L %.17g ref %.17Lg (%.2f) [eps(1+tau)]", is_float ? "float" : "double",
+                     H, h, w, s, ext[c], got_T[c], Tref, eT, got_L[c], Lref, eL);
+        }
+    }
+    printf("common case %s: %ld random rays, worst T %.2f, L %.2f  [eps (1 + tau)]  (%.1f s)\n",
+           is_float ? "float" : "double", n, wT, wL, (double)(clock() - t0) / CLOCKS_PER_SEC);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -2025,6 +2142,7 @@ int main(int argc, char **argv)
     test_ref_exp();
     ref_tol = 4e-18L;
     if (want(argc, argv, "grid")) { test_grid(0); test_grid(1); }
+    if (want(argc, argv, "common")) { test_common(0, mt_scale(600, 60)); test_common(1, mt_scale(600, 60)); }
     if (want(argc, argv, "sun")) { test_sun(0); test_sun(1); test_sun_cases(); test_dirac(); }
     if (want(argc, argv, "layers")) { test_layers(); test_layers_nu0(); test_layers_float_tiny();
                                           test_layers_far_below(); test_layers_random(mt_scale(500, 60), 0); }

@@ -150,6 +150,12 @@ MIST_FUNC double use_all(double x)
         sf += mist_hfog_inscatterf(&hff[0], of, wif, 100.0f).r;
         sf += mist_hfog_applyf(&hff[0], of, wif, 100.0f, tf).g;
         mist_hfog_layers_evalf(hff, 2, of, wif, 100.0f, 4, &tf, &lf, &bf); sf += tf.r + lf.r + bf.r;
+        {   /* the batch form, in place */
+            double len = 100.0;
+            float lenf = 100.0f;
+            mist_hfog_apply_n(&hf[0], &o, &wi, &len, &t, &t, 1); s += t.r;
+            mist_hfog_apply_nf(&hff[0], &of, &wif, &lenf, &tf, &tf, 1); sf += tf.r;
+        }
         sf += mist_hfog_extinctionf(&hff[0], of).g;
         sf += mist_hfog_optical_depthf(&hff[0], of, wif, 100.0f).r;
         sf += mist_hfog_sample_distancef(&hff[0], of, wif, 100.0f, 1, 0.5f);
