@@ -481,13 +481,28 @@ static void slab_lights(slab *s, int front)
     s->sky[0] = 0.05; s->sky[1] = 0.08; s->sky[2] = 0.14;
 }
 
+/* One panel of a slab scene: its lights for the row, the camera, the
+ * render, its time printed, and the panel copied into img at (ox, oy). */
+static void slab_panel(slab *s, int row, int P, float *pan, const char *label, float *img,
+                       int iw, int ox, int oy)
+{
+    double tt;
+    slab_lights(s, row);
+    s->tanfov = tan(50 * PI / 180);
+    s->w = s->h = P;
+    s->spp = SPP * quality;
+    tt = render(s, slab_pixel, pan, P, P, label);
+    printf("%-45s %6.1f s\n", label, tt);
+    blit(img, iw, pan, P, P, ox, oy);
+}
+
 static int scene_phase(const char *argv0)
 {
     const double d = 10;
     const int P = 96 * resf, NM = 5;
     const char *names[5] = { "HG (Mie g)", "Cornette-Shanks (Mie g)", "Draine (fit's lobe)",
                              "Jendersie-d'Eon fit", "Lorenz-Mie table RGB" };
-    double g = 0, t0 = now(), tt;
+    double g = 0, t0 = now();
     mist_tab *tab = mie_table(d, (size_t)1025 * (size_t)(quality > 4 ? 4 : quality), &g, NULL);
     mist_fog fog = mist_fog_from_diameter(d);
     float *img = (float *)calloc((size_t)P * NM * P * 2 * 3, sizeof(float));
@@ -510,14 +525,8 @@ static int scene_phase(const char *argv0)
             default: s.phase.tab = tab; break;
             }
             s.sigma[0] = s.sigma[1] = s.sigma[2] = 1.0;
-            slab_lights(&s, row);
-            s.tanfov = tan(50 * PI / 180);
-            s.w = s.h = P;
-            s.spp = SPP * quality;
             snprintf(label, sizeof label, "%s, sun %s", names[m], row ? "in front" : "behind");
-            tt = render(&s, slab_pixel, pan, P, P, label);
-            printf("%-45s %6.1f s\n", label, tt);
-            blit(img, P * NM, pan, P, P, m * P, row * P);
+            slab_panel(&s, row, P, pan, label, img, P * NM, m * P, row * P);
         }
     free(pan);
     free(tab);
@@ -556,18 +565,11 @@ static int scene_size(const char *argv0)
         for (row = 0; row < 2; ++row) {
             slab s;
             char label[96];
-            double tt;
             memset(&s, 0, sizeof s);
             s.phase.ph = mist_phase_fog(fog);
             for (c = 0; c < 3; ++c) s.sigma[c] = cs[c] / cs[1];
-            slab_lights(&s, row);
-            s.tanfov = tan(50 * PI / 180);
-            s.w = s.h = P;
-            s.spp = SPP * quality;
             snprintf(label, sizeof label, "fit d = %g um, sun %s", D[k], row ? "in front" : "behind");
-            tt = render(&s, slab_pixel, pan, P, P, label);
-            printf("%-45s %6.1f s\n", label, tt);
-            blit(img, P * 4, pan, P, P, k * P, row * P);
+            slab_panel(&s, row, P, pan, label, img, P * 4, k * P, row * P);
         }
     }
     free(pan);
