@@ -5027,7 +5027,10 @@ MIST__F void MIST__FN(mist__impl_tab_sample_n)(const MIST__TAB *t, const MIST__T
 /* mist_hfog_extinction st rho at a point (within 6 and 4 eps, measured).   */
 /*                                                                          */
 /* THE HEIGHT AXIS (up; all zero, or not finite: y).  Unit to rounding it   */
-/* is used as given, else normalised.  The start's height origin . up is an */
+/* is used as given (its length taken as 1), else the axis is up / |up|:    */
+/* the height and the slope are divided by |up| carried as hi + lo (a unit  */
+/* vector rounded first erred by |origin| eps in the height, |origin| / H   */
+/* eps in the density's exponent).  The start's height origin . up is an    */
 /* exact dot product (error-free products summed into an expansion),        */
 /* carried with the base as hi + lo, so that it enters h as an input y      */
 /* would; the slope w = dir . up / |dir| likewise (the dot product exact,   */
@@ -5566,13 +5569,44 @@ MIST__F MIST__T MIST__FN(mist__hvert)(const MIST__HFOG *fog, MIST__V3 l)
 
 /* A point's height along the fog's axis as the pair (*y, *yb), y - yb its
  * height above the base (see mist__hup); returns 1 where the axis is not y
- * (*a: as used). */
+ * (the axis is then *a / *an: up itself and 1 where unit to rounding, else
+ * up scaled by a power of 2 and its length). */
 MIST__F int MIST__FN(mist__hheight)(const MIST__HFOG *fog, MIST__V3 p, MIST__T *y, MIST__T *yb,
-                                    MIST__V3 *a)
+                                    MIST__V3 *a, MIST__T *an)
 {
     MIST__T hl, ne, h;
+    MIST__V3 u = fog->up;
+    *an = MIST__C(1);
     if (!MIST__FN(mist__haxis)(fog, a)) { *y = p.y; *yb = fog->base; return 0; }
-    h = MIST__FN(mist__dot2)(p, *a, &hl);
+    if ((a->x == u.x && a->y == u.y && a->z == u.z)      /* unit: as given */
+        || (u.x == MIST__C(0) && u.y == MIST__C(0)) || (u.x == MIST__C(0) && u.z == MIST__C(0))
+        || (u.y == MIST__C(0) && u.z == MIST__C(0)))      /* an axis: exact */
+        h = MIST__FN(mist__dot2)(p, *a, &hl);
+    else {
+        /* p . u / |u| to ~eps^2, u scaled to its largest component
+         * (exactly): the rounded unit vector *a errs by an eps, |p| eps in
+         * the height, that many eps of the density's exponent where |p|/H
+         * is large (a start 300 scale heights up a tilted axis: 300 eps) */
+        MIST__T m = MIST__M(fabs)(u.x), n2, n2l, N, Nl, q, pp, pe;
+        int e;
+        m = m > MIST__M(fabs)(u.y) ? m : MIST__M(fabs)(u.y);
+        m = m > MIST__M(fabs)(u.z) ? m : MIST__M(fabs)(u.z);
+        (void)MIST__FN(mist__frexp)(m, &e);
+        u.x = MIST__FN(mist__ldexp)(u.x, -e);
+        u.y = MIST__FN(mist__ldexp)(u.y, -e);
+        u.z = MIST__FN(mist__ldexp)(u.z, -e);
+        h = MIST__FN(mist__dot2)(p, u, &hl);
+        n2 = MIST__FN(mist__dot2)(u, u, &n2l);                  /* in [1/4, 3) */
+        N = MIST__M(sqrt)(n2);                                  /* |u| = N + Nl */
+        pp = MIST__FN(mist__two_prod)(N, N, &pe);
+        Nl = (((n2 - pp) - pe) + n2l) / (MIST__C(2) * N);
+        q = h / N;                                               /* (h + hl) / (N + Nl) */
+        pp = MIST__FN(mist__two_prod)(q, N, &pe);
+        hl = MIST__FN(mist__finite)(q) && MIST__FN(mist__finite)(pe)
+           ? ((((h - pp) - pe) + hl) - q * Nl) / N : MIST__C(0);
+        h = q;
+        *a = u; *an = N;
+    }
     *y = MIST__FN(mist__two_sum)(h, -fog->base, &ne);
     *yb = -(ne + hl);
     return 1;
@@ -5593,9 +5627,9 @@ MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3
                                 MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
 {
     MIST__V3 a;
-    MIST__T wv;
+    MIST__T wv, an;
     *v = MIST__FN(mist__unit)(dir);
-    if (!MIST__FN(mist__hheight)(fog, origin, y, yb, &a)) {
+    if (!MIST__FN(mist__hheight)(fog, origin, y, yb, &a, &an)) {
         wv = v->y;
     } else {
         MIST__T lo;
@@ -5618,6 +5652,7 @@ MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3
             } else                                  /* zero, NaN, inf: v */
                 wv = MIST__FN(mist__dot2)(*v, a, &lo);
         }
+        if (an != MIST__C(1)) wv /= an;             /* a non-unit axis */
     }
     *w = wv < MIST__C(-1) ? MIST__C(-1) : (wv > MIST__C(1) ? MIST__C(1) : wv);
     return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
@@ -6109,13 +6144,13 @@ MIST__F MIST__T MIST__FN(mist__hquot)(MIST__T y, MIST__T yb, MIST__T H, MIST__T 
  * is +inf. */
 MIST__F MIST__RGB MIST__FN(mist__impl_hfog_extinction)(const MIST__HFOG *fog, MIST__V3 p)
 {
-    MIST__T e[3] = { 0, 0, 0 }, sR, sM, st, y, yb, hh = 0, hl = 0;
+    MIST__T e[3] = { 0, 0, 0 }, sR, sM, st, y, yb, hh = 0, hl = 0, an;
     MIST__V3 a;
     MIST__RGB r;
     int c, sx;
     if (fog && MIST__FN(mist__hlayer)(fog, 0, &sR, &sM, &st, &sx)) {
         MIST__T d0 = MIST__FN(mist__pos)(fog->density), H = fog->scale_height;
-        (void)MIST__FN(mist__hheight)(fog, p, &y, &yb, &a);
+        (void)MIST__FN(mist__hheight)(fog, p, &y, &yb, &a, &an);
         if (MIST__FN(mist__finite)(y) && MIST__FN(mist__finite)(yb)) {
             if (H <= MIST__BIG) hh = MIST__FN(mist__hquot)(y, yb, H, &hl);
             for (c = 0; c < 3; ++c) {

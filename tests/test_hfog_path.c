@@ -129,14 +129,21 @@ static rray ref_ray(const mist_hfog *f, int c, const LD *o, const LD *d, const L
     e2 = c == 0 ? f->mie_ext.r : c == 1 ? f->mie_ext.g : f->mie_ext.b;
     st = (e1 > sR ? e1 : sR) + (e2 > sM ? e2 : sM);
     if (up) {
-        LD u2 = up[0] * up[0] + up[1] * up[1] + up[2] * up[2], un[3];
-        if (fabsld(u2 - 1) > 16 * eps) {      /* normalised, as mist does */
-            un[0] = up[0] / sqrtl(u2); un[1] = up[1] / sqrtl(u2); un[2] = up[2] / sqrtl(u2);
-            up = un;
-        }
+        LD u2 = up[0] * up[0] + up[1] * up[1] + up[2] * up[2], N = 1, Nl = 0;
+        if (fabsld(u2 - 1) > 16 * eps) {      /* normalised, as mist does: */
+            LD nl, n = dot_ld(up, up, &nl);   /* |up| = N + Nl, and the height */
+            N = sqrtl(n);                     /* divided by it with its remainder */
+            Nl = (fmal(-N, N, n) + nl) / (2 * N);   /* (a unit vector rounded */
+        }                                     /* to long double: |o| 2^-64 off) */
         y = dot_ld(o, up, &ylo);
         w = dot_ld(d, up, &wlo);
         w += wlo;
+        if (N != 1 || Nl != 0) {
+            LD q = y / N;
+            ylo = (fmal(-q, N, y) + ylo - q * Nl) / N;
+            y = q;
+            w /= N + Nl;
+        }
     } else { y = o[1]; w = d[1]; }
     if (fabsld(n2 - 1) > 16 * eps) w /= sqrtl(n2);
     r.uniform = !(f->scale_height <= DBL_MAX);
@@ -359,7 +366,7 @@ static void test_random(int flt, int rotate, long n)
     mt_rng rng;
     long i, bad0 = n_bad, n0 = n_checked;
     double w0 = worst_ratio;
-    rng.s = 1234567 + 2 * (uint64_t)flt + (uint64_t)rotate;
+    rng.s = 1234567 + 2 * (uint64_t)flt + (uint64_t)rotate + (rotate == 2 ? 1000 : 0);
     worst_ratio = 0;
     for (i = 0; i < n; ++i) {
         double H = pow(10, -2 + 6 * mt_uniform(&rng)), base = 200 * (mt_uniform(&rng) - 0.5);
@@ -399,13 +406,23 @@ static void test_random(int flt, int rotate, long n)
             if (flt) {   /* up unit to float's rounding (else it is normalised) */
                 f.up.x = (float)f.up.x; f.up.y = (float)f.up.y; f.up.z = (float)f.up.z;
             }
+            if (rotate == 2) {   /* up of any length: the height and slope
+                                  * along up / |up| (the reference divides by
+                                  * |up| in long double; mist rounding the
+                                  * unit vector instead erred by |o|/H eps) */
+                double k = pow(10, -3 + 6 * mt_uniform(&rng));
+                f.up.x *= k; f.up.y *= k; f.up.z *= k;
+                if (flt) { f.up.x = (float)f.up.x; f.up.y = (float)f.up.y; f.up.z = (float)f.up.z; }
+            }
             memcpy(o, o2, sizeof o); memcpy(d, d2, sizeof d);
         }
         one(&f, flt, o, d, tmax, (int)(i % 3), xi, rotate ? "rotated" : "random");
     }
-    printf("%s %s: %ld distances, worst %.3f of the bar\n", rotate ? "rotated" : "random",
+    printf("%s %s: %ld distances, worst %.3f of the bar\n",
+           rotate == 2 ? "rotated, up not unit," : rotate ? "rotated" : "random",
            flt ? "float" : "double", n_checked - n0, worst_ratio);
-    mt_check(n_bad == bad0, "%s %s: %ld of %ld distances beyond the bar", rotate ? "rotated" : "random",
+    mt_check(n_bad == bad0, "%s %s: %ld of %ld distances beyond the bar",
+             rotate == 2 ? "rotated, up not unit," : rotate ? "rotated" : "random",
              flt ? "float" : "double", n_bad - bad0, n_checked - n0);
     if (w0 > worst_ratio) worst_ratio = w0;
 }
@@ -1192,6 +1209,8 @@ int main(int argc, char **argv)
     test_random(1, 0, mt_scale(20000, 2000));
     test_random(0, 1, mt_scale(20000, 2000));
     test_random(1, 1, mt_scale(20000, 2000));
+    test_random(0, 2, mt_scale(20000, 2000));
+    test_random(1, 2, mt_scale(20000, 2000));
     test_monotone();
     test_chi2();
     test_depth(0, 0, mt_scale(20000, 2000));
