@@ -3442,29 +3442,34 @@ MIST__F MIST__FOG MIST__FN(mist__impl_fog_from_diameter)(MIST__T d)
 
 MIST__F MIST__FOG MIST__FN(mist__fog_interp)(const double *tab, int n, MIST__T d)
 {
-    MIST__T lo = MIST__C(-4.60517018598809136804),     /* log 0.01 */
-            hi = MIST__C(3.91202300542814605862),      /* log 50 */
-            t, s, v[4], h00, h10, h01, h11;
+    /* in double for both types (the float pass rounds the four results
+     * once: in float t near 55 would move in steps of 4e-6, a staircase) */
+    double lo = -4.60517018598809136804,               /* log 0.01 */
+           hi = 3.91202300542814605862,                /* log 50 */
+           x = (double)d, t, s, v[4], h00, h10, h01, h11;
     int i, j;
     if (!(d > MIST__C(0.01))) return MIST__FN(mist__impl_fog_from_diameter)(d);
-    if (d > MIST__C(50)) d = MIST__C(50);
-    t = (MIST__M(log)(d) - lo) / (hi - lo) * (MIST__T)(n - 1);
-    i = t < MIST__C(0) ? 0 : t >= (MIST__T)(n - 2) ? n - 2 : (int)t;
-    s = t - (MIST__T)i;
-    s = s < MIST__C(0) ? MIST__C(0) : s > MIST__C(1) ? MIST__C(1) : s;
-    h01 = s * s * (MIST__C(3) - MIST__C(2) * s);
-    h00 = MIST__C(1) - h01;
-    h10 = s * (MIST__C(1) - s) * (MIST__C(1) - s);
-    h11 = s * s * (s - MIST__C(1));
+    if (x > 50) x = 50;
+    t = (log(x) - lo) / (hi - lo) * (double)(n - 1);
+    i = t < 0 ? 0 : t >= (double)(n - 2) ? n - 2 : (int)t;
+    s = t - (double)i;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    h01 = s * s * (3 - 2 * s);
+    h00 = 1 - h01;
+    h10 = s * (1 - s) * (1 - s);
+    h11 = s * s * (s - 1);
     for (j = 0; j < 4; ++j) {
-        MIST__T y0 = (MIST__T)tab[4 * i + j], y1 = (MIST__T)tab[4 * (i + 1) + j];
-        MIST__T c = y1 - y0, a = i > 0 ? y0 - (MIST__T)tab[4 * (i - 1) + j] : c,
-                b = i + 2 < n ? (MIST__T)tab[4 * (i + 2) + j] - y1 : c;
-        MIST__T m0 = a * c > MIST__C(0) ? MIST__C(2) * a * c / (a + c) : MIST__C(0),
-                m1 = c * b > MIST__C(0) ? MIST__C(2) * c * b / (c + b) : MIST__C(0);
+        double y0 = tab[4 * i + j], y1 = tab[4 * (i + 1) + j];
+        double c = y1 - y0, a = i > 0 ? y0 - tab[4 * (i - 1) + j] : c,
+               b = i + 2 < n ? tab[4 * (i + 2) + j] - y1 : c;
+        double m0 = a * c > 0 ? 2 * a * c / (a + c) : 0,
+               m1 = c * b > 0 ? 2 * c * b / (c + b) : 0;
         v[j] = h00 * y0 + h10 * m0 + h01 * y1 + h11 * m1;
     }
-    return MIST__FN(mist__impl_fog_make)(v[0], v[1], MIST__M(exp)(v[2]), v[3]);
+    v[2] = exp(v[2]);
+    v[2] = v[2] < 1000 ? v[2] : 1000;             /* the bound, exactly in float too */
+    return MIST__FN(mist__impl_fog_make)((MIST__T)v[0], (MIST__T)v[1], (MIST__T)v[2],
+                                         (MIST__T)v[3]);
 }
 
 MIST__F MIST__FOG MIST__FN(mist__impl_fog_from_diameter_mie)(MIST__T d)
