@@ -5541,13 +5541,20 @@ MIST__F MIST__T MIST__FN(mist__dot2)(MIST__V3 a, MIST__V3 b, MIST__T *lo)
     return MIST__FN(mist__two_sum)(e[5], s, lo);
 }
 
+/* Whether the fog's up is all zero (the y axis: the common case, which
+ * the callers below test first, inline, before the general axis). */
+MIST__F MIST__HOT int MIST__FN(mist__hyup)(const MIST__HFOG *fog)
+{
+    return (fog->up.x == MIST__C(0)) & (fog->up.y == MIST__C(0)) & (fog->up.z == MIST__C(0));
+}
+
 /* The fog's height axis as used (*a): 0 where it is the y axis (up all
  * zero, or with a NaN or infinite component), else 1 with up itself when
  * unit to rounding, normalised otherwise. */
 MIST__F int MIST__FN(mist__haxis)(const MIST__HFOG *fog, MIST__V3 *a)
 {
     MIST__V3 u = fog->up;
-    if ((u.x == MIST__C(0) && u.y == MIST__C(0) && u.z == MIST__C(0))
+    if (MIST__FN(mist__hyup)(fog)
         || !(MIST__FN(mist__finite)(u.x) && MIST__FN(mist__finite)(u.y)
              && MIST__FN(mist__finite)(u.z)))
         return 0;
@@ -5556,11 +5563,11 @@ MIST__F int MIST__FN(mist__haxis)(const MIST__HFOG *fog, MIST__V3 *a)
 }
 
 /* The vertical component of the unit vector l (the sun's direction). */
-MIST__F MIST__T MIST__FN(mist__hvert)(const MIST__HFOG *fog, MIST__V3 l)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hvert)(const MIST__HFOG *fog, MIST__V3 l)
 {
     MIST__V3 a;
     MIST__T lo;
-    if (!MIST__FN(mist__haxis)(fog, &a)) return l.y;
+    if (MIST__FN(mist__hyup)(fog) || !MIST__FN(mist__haxis)(fog, &a)) return l.y;
     return MIST__FN(mist__dot2)(l, a, &lo);
 }
 
@@ -5589,8 +5596,8 @@ MIST__F int MIST__FN(mist__hheight)(const MIST__HFOG *fog, MIST__V3 p, MIST__T *
  * compensated and dir scaled to its largest component (exactly), so that
  * a nearly level ray keeps w's relative accuracy (a few eps), as v.y has.
  * Returns 0 where the height is not finite. */
-MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
-                                MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+MIST__F int MIST__FN(mist__hup_axis)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                     MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
 {
     MIST__V3 a;
     MIST__T wv;
@@ -5620,6 +5627,19 @@ MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3
         }
     }
     *w = wv < MIST__C(-1) ? MIST__C(-1) : (wv > MIST__C(1) ? MIST__C(1) : wv);
+    return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
+}
+/* (the y axis inline: mist__hup_axis's first branch; the general axis out
+ * of line, so that the common case's callers stay small) */
+MIST__F MIST__HOT int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                          MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+{
+    if (!MIST__FN(mist__hyup)(fog))
+        return MIST__FN(mist__hup_axis)(fog, origin, dir, y, yb, v, w);
+    *v = MIST__FN(mist__unit)(dir);
+    *y = origin.y;
+    *yb = fog->base;
+    *w = v->y < MIST__C(-1) ? MIST__C(-1) : (v->y > MIST__C(1) ? MIST__C(1) : v->y);
     return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
 }
 
@@ -5781,10 +5801,13 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double
 #endif
         tr[c] = MIST__FN(mist__hexp)(tau < 700.0 ? -tau : -700.0, &om);
         /* (1 - T) / st = C phi1(tau), phi1(tau) = (1 - T) / tau, below tau =
-         * 1: the column itself, tau's rounding cancels in phi1 */
-        om = om / (tau < 1.0 ? tau : k->st[c]);
-        om = tau < 1.0 ? om * col : om;
-        if (ins) ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om;
+         * 1: the column itself, tau's rounding cancels in phi1 (the
+         * transmittance alone skips it: a division a channel) */
+        if (ins) {
+            om = om / (tau < 1.0 ? tau : k->st[c]);
+            om = tau < 1.0 ? om * col : om;
+            ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om;
+        }
     }
     return ok;
 }
@@ -5821,7 +5844,7 @@ MIST__F int MIST__FN(mist__hfk_make)(const MIST__HFOG *fog, MIST__T d0, MIST__T 
  * its peak: +inf counts as the largest finite value (clamped here, before
  * phi1(tau), 1 - T or phi1(z) multiply it; else the factor is lost: 5% at
  * tau = 0.1); NaN as 0. */
-MIST__F void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+MIST__F void MIST__FN(mist__hmie_ptr)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
 {
 #ifndef MIST_NO_TAB
     if (fog->mie_tab) {
@@ -5836,6 +5859,16 @@ MIST__F void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
     if (fog->mie_prepared) p[0] = MIST__FN(mist__impl_phase_eval)(fog->mie_prepared, u);
     else p[0] = MIST__FN(mist__fog_eval)(&fog->mie_phase, u);
     p[0] = MIST__FN(mist__pos)(p[0]);
+    p[1] = p[2] = p[0];
+}
+/* (both pointers NULL, the common case: mie_phase inline) */
+MIST__F MIST__HOT void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+{
+#ifndef MIST_NO_TAB
+    if (fog->mie_tab) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
+#endif
+    if (fog->mie_prepared) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
+    p[0] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
     p[1] = p[2] = p[0];
 }
 
