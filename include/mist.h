@@ -5629,18 +5629,23 @@ MIST__F int MIST__FN(mist__hup_axis)(const MIST__HFOG *fog, MIST__V3 origin, MIS
     *w = wv < MIST__C(-1) ? MIST__C(-1) : (wv > MIST__C(1) ? MIST__C(1) : wv);
     return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
 }
-/* (the y axis inline: mist__hup_axis's first branch; the general axis out
- * of line, so that the common case's callers stay small) */
-MIST__F MIST__HOT int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
-                                          MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+/* (the y axis, up all zero, inline: mist__hup_axis's first branch; the
+ * general axis out of line, so that the common case's callers stay small) */
+MIST__F MIST__HOT int MIST__FN(mist__hup_y)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                            MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
 {
-    if (!MIST__FN(mist__hyup)(fog))
-        return MIST__FN(mist__hup_axis)(fog, origin, dir, y, yb, v, w);
     *v = MIST__FN(mist__unit)(dir);
     *y = origin.y;
     *yb = fog->base;
     *w = v->y < MIST__C(-1) ? MIST__C(-1) : (v->y > MIST__C(1) ? MIST__C(1) : v->y);
     return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
+}
+MIST__F MIST__HOT int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                          MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+{
+    if (!MIST__FN(mist__hyup)(fog))
+        return MIST__FN(mist__hup_axis)(fog, origin, dir, y, yb, v, w);
+    return MIST__FN(mist__hup_y)(fog, origin, dir, y, yb, v, w);
 }
 
 /* The integral of the density factor  density exp(-(y(t) - base)/H)  along
@@ -5839,8 +5844,9 @@ MIST__F int MIST__FN(mist__hfk_make)(const MIST__HFOG *fog, MIST__T d0, MIST__T 
 }
 
 /* The Mie phase function's density per steradian at u for each channel
- * (p[0..2]): mie_tab's where set (its channels' own where it has 3, else
- * their mean), else mie_prepared's, else mie_phase's.  A Dirac lobe on
+ * (p[0..2], mist__hmie; mist__hmie_ptr where a pointer is set): mie_tab's
+ * where set (its channels' own where it has 3, else their mean), else
+ * mie_prepared's, else mie_phase's.  A Dirac lobe on
  * its peak: +inf counts as the largest finite value (clamped here, before
  * phi1(tau), 1 - T or phi1(z) multiply it; else the factor is lost: 5% at
  * tau = 0.1); NaN as 0. */
@@ -5862,14 +5868,18 @@ MIST__F void MIST__FN(mist__hmie_ptr)(const MIST__HFOG *fog, MIST__T u, MIST__T 
     p[1] = p[2] = p[0];
 }
 /* (both pointers NULL, the common case: mie_phase inline) */
+MIST__F MIST__HOT void MIST__FN(mist__hmie_fog)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+{
+    p[0] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
+    p[1] = p[2] = p[0];
+}
 MIST__F MIST__HOT void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
 {
 #ifndef MIST_NO_TAB
     if (fog->mie_tab) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
 #endif
     if (fog->mie_prepared) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
-    p[0] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
-    p[1] = p[2] = p[0];
+    MIST__FN(mist__hmie_fog)(fog, u, p);
 }
 
 /* Transmittance and in-scattered radiance of the ray from `origin` along
@@ -6026,6 +6036,30 @@ MIST__F MIST__RGB MIST__FN(mist__impl_hfog_apply)(const MIST__HFOG *fog, MIST__V
 }
 
 #ifndef MIST_NO_BATCH
+/* One ray's inputs to the straight path as mist__impl_hfog_eval takes
+ * them (element j of the block's arrays); plain: the fog's up is all zero
+ * and both phase pointers NULL (mist__hup's and mist__hmie's first tests,
+ * known). */
+MIST__F MIST__HOT void MIST__FN(mist__hprep)(const MIST__HFOG *fog, int plain, MIST__V3 l,
+                                             MIST__V3 o, MIST__V3 d, MIST__T len, size_t j,
+                                             int *ok, double *y, double *yb, double *w,
+                                             double *s, double *pR, double (*pM)[32])
+{
+    MIST__V3 v;
+    MIST__T u, yj, ybj, wj, p3[3];
+    int c;
+    if (plain) ok[j] = MIST__FN(mist__hup_y)(fog, o, d, &yj, &ybj, &v, &wj);
+    else ok[j] = MIST__FN(mist__hup)(fog, o, d, &yj, &ybj, &v, &wj);
+    ok[j] &= len > MIST__C(0);
+    u = l.x * v.x + l.y * v.y + l.z * v.z;
+    y[j] = (double)yj; yb[j] = (double)ybj; w[j] = (double)wj;
+    s[j] = (double)len;
+    pR[j] = (double)MIST__FN(mist__impl_rayleigh_eval)(u);
+    if (plain) MIST__FN(mist__hmie_fog)(fog, u, p3);
+    else MIST__FN(mist__hmie)(fog, u, p3);
+    for (c = 0; c < 3; ++c) pM[c][j] = (double)p3[c];
+}
+
 /* mist_hfog_apply of each ray i < n: origin[i], dir[i], length[i],
  * background[i] -> out[i], bit for bit (out may equal background; n = 0
  * does nothing).  The fog is sanitised once; in blocks of 32, each ray's
@@ -6040,7 +6074,7 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
 {
     MIST__T st[3], sR[3], sM[3], E[3], La[3], d0 = 0, H = 0;
     double tr[3][32], ls[3][32], y[32], yb[32], w[32], s[32], pR[32], pM[3][32];
-    int sx[3], ok[32], c, fast;
+    int sx[3], ok[32], c, fast, plain = 0;
     MIST__HFK k;
     MIST__V3 l = { 0, 0, 1 };
     size_t i0, i;
@@ -6058,6 +6092,10 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
         fast = d0 > MIST__C(0) && H > MIST__C(0) && MIST__FN(mist__finite)(fog->base)
             && MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k);
         l = MIST__FN(mist__unit)(fog->sun_dir);
+        plain = MIST__FN(mist__hyup)(fog) & (fog->mie_prepared == MIST__NULL);
+#ifndef MIST_NO_TAB
+        plain &= fog->mie_tab == MIST__NULL;
+#endif
     }
     if (!fast) {
         for (i = 0; i < n; ++i)
@@ -6066,18 +6104,16 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
     }
     for (i0 = 0; i0 < n; i0 += 32) {
         size_t m = n - i0 < 32 ? n - i0 : 32, j;
-        for (j = 0; j < m; ++j) {           /* as mist__impl_hfog_eval */
-            MIST__V3 v;
-            MIST__T u, yj, ybj, wj, p3[3];
-            ok[j] = MIST__FN(mist__hup)(fog, origin[i0 + j], dir[i0 + j], &yj, &ybj, &v, &wj);
-            ok[j] &= length[i0 + j] > MIST__C(0);
-            u = l.x * v.x + l.y * v.y + l.z * v.z;
-            y[j] = (double)yj; yb[j] = (double)ybj; w[j] = (double)wj;
-            s[j] = (double)length[i0 + j];
-            pR[j] = (double)MIST__FN(mist__impl_rayleigh_eval)(u);
-            MIST__FN(mist__hmie)(fog, u, p3);
-            for (c = 0; c < 3; ++c) pM[c][j] = (double)p3[c];
-        }
+        /* (the common fog, y up and mie_phase, a loop of its own: the
+         * tests once a call) */
+        if (plain)
+            for (j = 0; j < m; ++j)
+                MIST__FN(mist__hprep)(fog, 1, l, origin[i0 + j], dir[i0 + j], length[i0 + j], j,
+                                      ok, y, yb, w, s, pR, pM);
+        else
+            for (j = 0; j < m; ++j)
+                MIST__FN(mist__hprep)(fog, 0, l, origin[i0 + j], dir[i0 + j], length[i0 + j], j,
+                                      ok, y, yb, w, s, pR, pM);
         for (; j < 32; ++j) {
             y[j] = yb[j] = w[j] = pR[j] = 0; s[j] = 1; ok[j] = 0;
             for (c = 0; c < 3; ++c) pM[c][j] = 0;
