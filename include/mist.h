@@ -5552,13 +5552,20 @@ MIST__F MIST__T MIST__FN(mist__dot2)(MIST__V3 a, MIST__V3 b, MIST__T *lo)
     return MIST__FN(mist__two_sum)(e[5], s, lo);
 }
 
+/* Whether the fog's up is all zero (the y axis: the common case, which
+ * the callers below test first, inline, before the general axis). */
+MIST__F MIST__HOT int MIST__FN(mist__hyup)(const MIST__HFOG *fog)
+{
+    return (fog->up.x == MIST__C(0)) & (fog->up.y == MIST__C(0)) & (fog->up.z == MIST__C(0));
+}
+
 /* The fog's height axis as used (*a): 0 where it is the y axis (up all
  * zero, or with a NaN or infinite component), else 1 with up itself when
  * unit to rounding, normalised otherwise. */
 MIST__F int MIST__FN(mist__haxis)(const MIST__HFOG *fog, MIST__V3 *a)
 {
     MIST__V3 u = fog->up;
-    if ((u.x == MIST__C(0) && u.y == MIST__C(0) && u.z == MIST__C(0))
+    if (MIST__FN(mist__hyup)(fog)
         || !(MIST__FN(mist__finite)(u.x) && MIST__FN(mist__finite)(u.y)
              && MIST__FN(mist__finite)(u.z)))
         return 0;
@@ -5567,11 +5574,11 @@ MIST__F int MIST__FN(mist__haxis)(const MIST__HFOG *fog, MIST__V3 *a)
 }
 
 /* The vertical component of the unit vector l (the sun's direction). */
-MIST__F MIST__T MIST__FN(mist__hvert)(const MIST__HFOG *fog, MIST__V3 l)
+MIST__F MIST__HOT MIST__T MIST__FN(mist__hvert)(const MIST__HFOG *fog, MIST__V3 l)
 {
     MIST__V3 a;
     MIST__T lo;
-    if (!MIST__FN(mist__haxis)(fog, &a)) return l.y;
+    if (MIST__FN(mist__hyup)(fog) || !MIST__FN(mist__haxis)(fog, &a)) return l.y;
     return MIST__FN(mist__dot2)(l, a, &lo);
 }
 
@@ -5631,8 +5638,8 @@ MIST__F int MIST__FN(mist__hheight)(const MIST__HFOG *fog, MIST__V3 p, MIST__T *
  * compensated and dir scaled to its largest component (exactly), so that
  * a nearly level ray keeps w's relative accuracy (a few eps), as v.y has.
  * Returns 0 where the height is not finite. */
-MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
-                                MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+MIST__F int MIST__FN(mist__hup_axis)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                     MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
 {
     MIST__V3 a;
     MIST__T wv, an;
@@ -5664,6 +5671,24 @@ MIST__F int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3
     }
     *w = wv < MIST__C(-1) ? MIST__C(-1) : (wv > MIST__C(1) ? MIST__C(1) : wv);
     return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
+}
+/* (the y axis, up all zero, inline: mist__hup_axis's first branch; the
+ * general axis out of line, so that the common case's callers stay small) */
+MIST__F MIST__HOT int MIST__FN(mist__hup_y)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                            MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+{
+    *v = MIST__FN(mist__unit)(dir);
+    *y = origin.y;
+    *yb = fog->base;
+    *w = v->y < MIST__C(-1) ? MIST__C(-1) : (v->y > MIST__C(1) ? MIST__C(1) : v->y);
+    return MIST__FN(mist__finite)(*y) && MIST__FN(mist__finite)(*yb);
+}
+MIST__F MIST__HOT int MIST__FN(mist__hup)(const MIST__HFOG *fog, MIST__V3 origin, MIST__V3 dir,
+                                          MIST__T *y, MIST__T *yb, MIST__V3 *v, MIST__T *w)
+{
+    if (!MIST__FN(mist__hyup)(fog))
+        return MIST__FN(mist__hup_axis)(fog, origin, dir, y, yb, v, w);
+    return MIST__FN(mist__hup_y)(fog, origin, dir, y, yb, v, w);
 }
 
 /* The integral of the density factor  density exp(-(y(t) - base)/H)  along
@@ -5824,10 +5849,13 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double
 #endif
         tr[c] = MIST__FN(mist__hexp)(tau < 700.0 ? -tau : -700.0, &om);
         /* (1 - T) / st = C phi1(tau), phi1(tau) = (1 - T) / tau, below tau =
-         * 1: the column itself, tau's rounding cancels in phi1 */
-        om = om / (tau < 1.0 ? tau : k->st[c]);
-        om = tau < 1.0 ? om * col : om;
-        if (ins) ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om;
+         * 1: the column itself, tau's rounding cancels in phi1 (the
+         * transmittance alone skips it: a division a channel) */
+        if (ins) {
+            om = om / (tau < 1.0 ? tau : k->st[c]);
+            om = tau < 1.0 ? om * col : om;
+            ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om;
+        }
     }
     return ok;
 }
@@ -5859,12 +5887,13 @@ MIST__F int MIST__FN(mist__hfk_make)(const MIST__HFOG *fog, MIST__T d0, MIST__T 
 }
 
 /* The Mie phase function's density per steradian at u for each channel
- * (p[0..2]): mie_tab's where set (its channels' own where it has 3, else
- * their mean), else mie_prepared's, else mie_phase's.  A Dirac lobe on
+ * (p[0..2], mist__hmie; mist__hmie_ptr where a pointer is set): mie_tab's
+ * where set (its channels' own where it has 3, else their mean), else
+ * mie_prepared's, else mie_phase's.  A Dirac lobe on
  * its peak: +inf counts as the largest finite value (clamped here, before
  * phi1(tau), 1 - T or phi1(z) multiply it; else the factor is lost: 5% at
  * tau = 0.1); NaN as 0. */
-MIST__F void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+MIST__F void MIST__FN(mist__hmie_ptr)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
 {
 #ifndef MIST_NO_TAB
     if (fog->mie_tab) {
@@ -5880,6 +5909,20 @@ MIST__F void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
     else p[0] = MIST__FN(mist__fog_eval)(&fog->mie_phase, u);
     p[0] = MIST__FN(mist__pos)(p[0]);
     p[1] = p[2] = p[0];
+}
+/* (both pointers NULL, the common case: mie_phase inline) */
+MIST__F MIST__HOT void MIST__FN(mist__hmie_fog)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+{
+    p[0] = MIST__FN(mist__pos)(MIST__FN(mist__fog_eval)(&fog->mie_phase, u));
+    p[1] = p[2] = p[0];
+}
+MIST__F MIST__HOT void MIST__FN(mist__hmie)(const MIST__HFOG *fog, MIST__T u, MIST__T *p)
+{
+#ifndef MIST_NO_TAB
+    if (fog->mie_tab) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
+#endif
+    if (fog->mie_prepared) { MIST__FN(mist__hmie_ptr)(fog, u, p); return; }
+    MIST__FN(mist__hmie_fog)(fog, u, p);
 }
 
 /* Transmittance and in-scattered radiance of the ray from `origin` along
@@ -6036,6 +6079,30 @@ MIST__F MIST__RGB MIST__FN(mist__impl_hfog_apply)(const MIST__HFOG *fog, MIST__V
 }
 
 #ifndef MIST_NO_BATCH
+/* One ray's inputs to the straight path as mist__impl_hfog_eval takes
+ * them (element j of the block's arrays); plain: the fog's up is all zero
+ * and both phase pointers NULL (mist__hup's and mist__hmie's first tests,
+ * known). */
+MIST__F MIST__HOT void MIST__FN(mist__hprep)(const MIST__HFOG *fog, int plain, MIST__V3 l,
+                                             MIST__V3 o, MIST__V3 d, MIST__T len, size_t j,
+                                             int *ok, double *y, double *yb, double *w,
+                                             double *s, double *pR, double (*pM)[32])
+{
+    MIST__V3 v;
+    MIST__T u, yj, ybj, wj, p3[3];
+    int c;
+    if (plain) ok[j] = MIST__FN(mist__hup_y)(fog, o, d, &yj, &ybj, &v, &wj);
+    else ok[j] = MIST__FN(mist__hup)(fog, o, d, &yj, &ybj, &v, &wj);
+    ok[j] &= len > MIST__C(0);
+    u = l.x * v.x + l.y * v.y + l.z * v.z;
+    y[j] = (double)yj; yb[j] = (double)ybj; w[j] = (double)wj;
+    s[j] = (double)len;
+    pR[j] = (double)MIST__FN(mist__impl_rayleigh_eval)(u);
+    if (plain) MIST__FN(mist__hmie_fog)(fog, u, p3);
+    else MIST__FN(mist__hmie)(fog, u, p3);
+    for (c = 0; c < 3; ++c) pM[c][j] = (double)p3[c];
+}
+
 /* mist_hfog_apply of each ray i < n: origin[i], dir[i], length[i],
  * background[i] -> out[i], bit for bit (out may equal background; n = 0
  * does nothing).  The fog is sanitised once; in blocks of 32, each ray's
@@ -6050,7 +6117,7 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
 {
     MIST__T st[3], sR[3], sM[3], E[3], La[3], d0 = 0, H = 0;
     double tr[3][32], ls[3][32], y[32], yb[32], w[32], s[32], pR[32], pM[3][32];
-    int sx[3], ok[32], c, fast;
+    int sx[3], ok[32], c, fast, plain = 0;
     MIST__HFK k;
     MIST__V3 l = { 0, 0, 1 };
     size_t i0, i;
@@ -6068,6 +6135,10 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
         fast = d0 > MIST__C(0) && H > MIST__C(0) && MIST__FN(mist__finite)(fog->base)
             && MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k);
         l = MIST__FN(mist__unit)(fog->sun_dir);
+        plain = MIST__FN(mist__hyup)(fog) & (fog->mie_prepared == MIST__NULL);
+#ifndef MIST_NO_TAB
+        plain &= fog->mie_tab == MIST__NULL;
+#endif
     }
     if (!fast) {
         for (i = 0; i < n; ++i)
@@ -6076,18 +6147,16 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
     }
     for (i0 = 0; i0 < n; i0 += 32) {
         size_t m = n - i0 < 32 ? n - i0 : 32, j;
-        for (j = 0; j < m; ++j) {           /* as mist__impl_hfog_eval */
-            MIST__V3 v;
-            MIST__T u, yj, ybj, wj, p3[3];
-            ok[j] = MIST__FN(mist__hup)(fog, origin[i0 + j], dir[i0 + j], &yj, &ybj, &v, &wj);
-            ok[j] &= length[i0 + j] > MIST__C(0);
-            u = l.x * v.x + l.y * v.y + l.z * v.z;
-            y[j] = (double)yj; yb[j] = (double)ybj; w[j] = (double)wj;
-            s[j] = (double)length[i0 + j];
-            pR[j] = (double)MIST__FN(mist__impl_rayleigh_eval)(u);
-            MIST__FN(mist__hmie)(fog, u, p3);
-            for (c = 0; c < 3; ++c) pM[c][j] = (double)p3[c];
-        }
+        /* (the common fog, y up and mie_phase, a loop of its own: the
+         * tests once a call) */
+        if (plain)
+            for (j = 0; j < m; ++j)
+                MIST__FN(mist__hprep)(fog, 1, l, origin[i0 + j], dir[i0 + j], length[i0 + j], j,
+                                      ok, y, yb, w, s, pR, pM);
+        else
+            for (j = 0; j < m; ++j)
+                MIST__FN(mist__hprep)(fog, 0, l, origin[i0 + j], dir[i0 + j], length[i0 + j], j,
+                                      ok, y, yb, w, s, pR, pM);
         for (; j < 32; ++j) {
             y[j] = yb[j] = w[j] = pR[j] = 0; s[j] = 1; ok[j] = 0;
             for (c = 0; c < 3; ++c) pM[c][j] = 0;

@@ -381,12 +381,31 @@ DEFINE_TYPE(float, f, nextafterf)
  * mist_hfog_apply gives it (bit for bit; within FMA_ULPS where the
  * compiler may contract), for fogs its straight path takes and fogs it
  * does not (dimmed sun, a halved extinction, coefficients, density or
- * scale height out of its range, NULL, no fog), rays over and beyond the
+ * scale height out of its range, NULL, no fog; z up, an axis off the
+ * coordinate axes, mie_prepared, a 3-channel mie_tab), rays over and beyond the
  * domain (level, nearly level, to infinity up and down, NaN and negative
  * lengths, zero and NaN directions, origins far below and above), lengths
  * 0 (NULL arrays), 1, 31, 32, 33, 100, in place (out = background), no
  * element past n written. */
-#define HFOG_BATCH(T, S, V3, RGB, HF)                                              \
+#define HFOG_BATCH(T, S, V3, RGB, HF, PH, TAB)                                     \
+static PH hfog_ph_##T;          /* kind 12's mie_prepared */                     \
+static TAB *hfog_tab_##T;       /* kind 13's mie_tab: 3 channels */              \
+static void hfog_tab_make_##T(void)                                              \
+{                                                                                \
+    static T mu[65], p[3 * 65];                                                  \
+    size_t bytes = CAT(mist_tab_bytes, S)(65, 3);                                \
+    int i, c;                                                                    \
+    for (i = 0; i < 65; ++i) {                                                   \
+        mu[i] = (T)(-1 + i / 32.0);                                              \
+        for (c = 0; c < 3; ++c)     /* three lobes: the channels differ */      \
+            p[3 * i + c] = (T)(0.05 + exp((2 + 3 * c) * (mu[i] - 1)));           \
+    }                                                                            \
+    mu[64] = 1;                                                                  \
+    hfog_ph_##T = CAT(mist_phase_hg, S)((T)0.7);                                 \
+    hfog_tab_##T = (TAB *)malloc(bytes);                                         \
+    mt_check(hfog_tab_##T != NULL && CAT(mist_tab_init, S)(hfog_tab_##T, bytes, mu, p, 65, 3) == 0, \
+             "a 3-channel table for the height fog's batch");                    \
+}                                                                                \
 static void hfog_fog_##T(HF *f, int kind)                                         \
 {                                                                                \
     memset(f, 0, sizeof *f);                                                     \
@@ -408,6 +427,10 @@ static void hfog_fog_##T(HF *f, int kind)                                       
     case 6: f->density = 0; break;                                               \
     case 7: f->rayleigh_ext.r = f->rayleigh_scat.r = f->mie_ext.r = f->mie_scat.r = 0; break; \
     case 8: f->scale_height = (T)1e-3; f->sun_dir.y = 0; break;                  \
+    case 10: f->up.z = 1; break;                        /* z up */               \
+    case 11: f->up.x = (T)0.3; f->up.y = (T)-1.6; f->up.z = (T)1.1; break;       \
+    case 12: f->mie_prepared = &hfog_ph_##T; break;                              \
+    case 13: f->mie_tab = hfog_tab_##T; f->up.z = -2; break;                     \
     default: break;                                                              \
     }                                                                            \
 }                                                                                \
@@ -450,6 +473,11 @@ static long hfog_check_##T(mt_rng *r, int kind, int n, int inplace, const HF *al
     int i;                                                                       \
     hfog_fog_##T(&f, kind);                                                      \
     hfog_rays_##T(r, o, d, s, b, n + 4);                                         \
+    if (kind == 10)     /* z up: the rays' y and z swapped (the same edges) */  \
+        for (i = 0; i < n + 4; ++i) {                                            \
+            T t = o[i].y; o[i].y = o[i].z; o[i].z = t;                           \
+            t = d[i].y; d[i].y = d[i].z; d[i].z = t;                             \
+        }                                                                        \
     memcpy(b0, b, sizeof b);                                                     \
     for (i = 0; i < n + 4; ++i) { y[i].r = y[i].g = y[i].b = (T)-7; }            \
     if (n == 0)                                                                  \
@@ -467,8 +495,8 @@ static long hfog_check_##T(mt_rng *r, int kind, int n, int inplace, const HF *al
     }                                                                            \
     return bad;                                                                  \
 }
-HFOG_BATCH(double, , mist_vec3, mist_rgb, mist_hfog)
-HFOG_BATCH(float, f, mist_vec3f, mist_rgbf, mist_hfogf)
+HFOG_BATCH(double, , mist_vec3, mist_rgb, mist_hfog, mist_phase, mist_tab)
+HFOG_BATCH(float, f, mist_vec3f, mist_rgbf, mist_hfogf, mist_phasef, mist_tabf)
 
 static void test_hfog_batch(mt_rng *r)
 {
@@ -477,7 +505,9 @@ static void test_hfog_batch(mt_rng *r)
     int kind, ni, ip;
     mist_hfog alt;
     mist_hfogf altf;
-    for (kind = 0; kind < 10; ++kind)
+    hfog_tab_make_double();
+    hfog_tab_make_float();
+    for (kind = 0; kind < 14; ++kind)
         for (ni = 0; ni < 6; ++ni)
             for (ip = 0; ip < 2; ++ip) {
                 bad += hfog_check_double(r, kind, ns[ni], ip, NULL)
@@ -494,6 +524,15 @@ static void test_hfog_batch(mt_rng *r)
     altf.density *= 1 + 0x1p-14f;
     mt_check(hfog_check_double(r, 0, 100, 0, &alt) > 0 && hfog_check_float(r, 0, 100, 0, &altf) > 0,
              "control: a fog denser by 2^-40 (float 2^-14) must differ");
+    /* control: the axis and the phase pointers are seen (a batch that took
+     * y up, or mie_phase, would differ) */
+    hfog_fog_double(&alt, 0);
+    hfog_fog_float(&altf, 0);
+    mt_check(hfog_check_double(r, 10, 100, 0, &alt) > 0 && hfog_check_float(r, 11, 100, 0, &altf) > 0
+             && hfog_check_double(r, 12, 100, 0, &alt) > 0 && hfog_check_float(r, 13, 100, 0, &altf) > 0,
+             "control: the fog's up and Mie phase pointers must move the results");
+    free(hfog_tab_double);
+    free(hfog_tab_float);
 }
 
 int main(void)
