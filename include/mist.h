@@ -5808,15 +5808,18 @@ MIST__F MIST__HOT double MIST__FN(mist__hexp)(double x, double *om)
 }
 
 /* The straight path for one ray (see above): returns 1 with tr[] and (ins)
- * ls[], else 0 (the caller takes the scaled path).  y - yb: the start's
- * height above the base; w in [-1, 1]; s > 0. */
+ * ls[], else 0 (the caller takes the scaled path).  *okl: 0 where a phase
+ * value is outside the path's range (ls[] then not valid; tr[] is: the
+ * transmittance's path must not depend on whether the in-scatter is
+ * wanted, so that every entry point gives the same T).  y - yb: the
+ * start's height above the base; w in [-1, 1]; s > 0. */
 MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double yb, double w,
                                             double s, double pR, const double *pM, int ins,
-                                            double *tr, double *ls)
+                                            double *tr, double *ls, int *okl)
 {
     const double lo = 1e-75, hi = 1e75;
     double n, ne, p, pe, f, fe, hh, hl, t, te, z, aw, e, om, col;
-    int c, ok;
+    int c, ok, l = 1;
     n = mist__two_sum(y, -yb, &ne);                        /* y - yb */
     p = mist__two_prod_b(w, s < hi ? s : 0.0, &pe);        /* w s; s = inf: 0 */
     f = mist__two_sum(n, p, &fe);
@@ -5839,13 +5842,15 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double
      * w != 0), s at z = 0: one division */
     t = (z < 1.0 ? s : k->H) * om;
     col = t / (z < 1.0 ? (z > 0.0 ? z : 1.0) : aw);
-    col = e * (z > 0.0 ? col : s);
+    /* below z = 2^-60 (1 - e^-z) / z is 1 to rounding (and a subnormal z
+     * would carry only its few bits) */
+    col = e * (z >= 8.6736173798840355e-19 ? col : s);
     ok &= (e >= DBL_MIN) & (e <= DBL_MAX) & (col > lo) & (col < hi);
     for (c = 0; c < 3; ++c) {
         double tau = k->st[c] * col;
         ok &= tau <= 700.0;
 #if MIST__DBL   /* (float's sanitised phase values all lie in {0} and (lo, hi)) */
-        ok &= !ins | (pM[c] == 0.0) | ((pM[c] > lo) & (pM[c] < hi));
+        l &= !ins | (pM[c] == 0.0) | ((pM[c] > lo) & (pM[c] < hi));
 #endif
         tr[c] = MIST__FN(mist__hexp)(tau < 700.0 ? -tau : -700.0, &om);
         /* (1 - T) / st = C phi1(tau), phi1(tau) = (1 - T) / tau, below tau =
@@ -5857,6 +5862,7 @@ MIST__F MIST__HOT int MIST__FN(mist__hfast)(const MIST__HFK *k, double y, double
             ls[c] = (k->a[c] + k->r[c] * pR + k->m[c] * pM[c]) * om;
         }
     }
+    *okl = l;
     return ok;
 }
 
@@ -5933,8 +5939,8 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
                                       MIST__T length, MIST__RGB *transmittance,
                                       MIST__RGB *inscatter)
 {
-    MIST__T tr[3], ls[3], st[3], sR[3], sM[3], E[3], La[3];
-    int sx[3];
+    MIST__T tr[3], ls[3], st[3], sR[3], sM[3], E[3], La[3], tk[3];
+    int sx[3], keep = 0;
     MIST__T d0 = fog ? MIST__FN(mist__pos)(fog->density) : MIST__C(0);
     MIST__T H = fog ? fog->scale_height : MIST__C(0), w = 0, y = 0, yb = 0;
     MIST__T pR = 0, pM[3] = { 0, 0, 0 }, ly = 0, nu = 0, anu = 0;
@@ -5968,12 +5974,15 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
             MIST__HFK k;
             double T[3], L[3] = { 0, 0, 0 }, pm[3];
             for (c = 0; c < 3; ++c) pm[c] = (double)pM[c];
+            int okl = 1;
             if (MIST__FN(mist__hfk_make)(fog, d0, H, st, sx, sR, sM, E, La, &k)
                 && MIST__FN(mist__hfast)(&k, (double)y, (double)yb, (double)w,
                                          (double)length, (double)pR, pm,
-                                         inscatter != MIST__NULL, T, L)) {
+                                         inscatter != MIST__NULL, T, L, &okl)) {
                 for (c = 0; c < 3; ++c) { tr[c] = (MIST__T)T[c]; ls[c] = (MIST__T)L[c]; }
-                goto out;
+                if (okl) goto out;
+                keep = 1;           /* T from here, the in-scatter by the scaled path */
+                for (c = 0; c < 3; ++c) tk[c] = tr[c];
             }
         }
         ray = MIST__FN(mist__hray_eval)(y, w, MIST__C(0), length, yb, H, d0);
@@ -6041,6 +6050,7 @@ MIST__F void MIST__FN(mist__impl_hfog_eval)(const MIST__HFOG *fog, MIST__V3 orig
         }
     }
 out:
+    if (keep) for (c = 0; c < 3; ++c) tr[c] = tk[c];
     if (transmittance) { transmittance->r = tr[0]; transmittance->g = tr[1]; transmittance->b = tr[2]; }
     if (inscatter) { inscatter->r = ls[0]; inscatter->g = ls[1]; inscatter->b = ls[2]; }
 }
@@ -6164,7 +6174,9 @@ MIST__F void MIST__FN(mist__impl_hfog_apply_n)(const MIST__HFOG *fog, const MIST
         for (j = 0; j < 32; ++j) {          /* THE STRAIGHT PATH: vectorised */
             double pm[3], t3[3], l3[3];
             for (c = 0; c < 3; ++c) pm[c] = pM[c][j];
-            ok[j] &= MIST__FN(mist__hfast)(&k, y[j], yb[j], w[j], s[j], pR[j], pm, 1, t3, l3);
+            int okl;
+            ok[j] &= MIST__FN(mist__hfast)(&k, y[j], yb[j], w[j], s[j], pR[j], pm, 1, t3, l3, &okl);
+            ok[j] &= okl;
             for (c = 0; c < 3; ++c) { tr[c][j] = t3[c]; ls[c][j] = l3[c]; }
         }
         for (j = 0; j < m; ++j) {
