@@ -96,10 +96,14 @@ endforeach()
 #             batch_nold walks the same blocks, remainders and arrays, the
 #             batch forms' indexing, which is what ASan checks there, and
 #             the stress run calls the batch forms of this configuration;
-#             batch took 7.8 s of CPU here; and quadrature and fits,
-#             closed forms evaluated: the functions they call run here
-#             under accuracy, domain and the stress run, 19 and 10 s under
-#             ASan).  batch_nold stays: built with
+#             batch took 7.8 s of CPU here; and the tests whose code the
+#             others run here and whose own work is arithmetic: quadrature,
+#             fits, fits_mie (closed forms and fits evaluated), chi2 (the
+#             samplers: accuracy, stress), height_fog (the height fog:
+#             hfog_path, the stress run, fuzz_hfog's live ASan + UBSan
+#             run), accuracy_nold (same_samples still runs its build),
+#             furnace (the public samplers, as accuracy): 38, 21, 19, 11,
+#             10, 9, 9 s under ASan).  batch_nold stays: built with
 #             -march=native -fno-math-errno it is asan's only build of the
 #             vectorised kernels (mist__draine_vk, the fma branches) and
 #             their stack blocks, and of n = 0 and n >= 1024 (in quick
@@ -198,7 +202,8 @@ if(MIST_VARIANTS AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
   # would make them a repeat, O3 and nofma, or where -march=native costs
   # more than it finds, asan: see above)
   mist_variant(asan "-O0 -g -fsanitize=address,undefined -fno-sanitize-recover=all" 2e6
-               "^(batch|tab_nold|quadrature|fits)$" OFF)
+               "^(batch|tab_nold|quadrature|fits|fits_mie|furnace|accuracy_nold|chi2|height_fog)$"
+               OFF)
   mist_variant(fastmath "-O2 -ffast-math" 5e6 "" OFF)
   mist_variant(O3 "-O3 ${_native} -ffp-contract=fast" 5e6 "^(accuracy_nold|tab_nold)$" OFF)
   mist_variant(O0 "-O0" 5e6 "" ON)
