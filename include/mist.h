@@ -60,7 +60,7 @@
  *   *_eval_n, *_sample_n       bit for bit the scalar function      (see BATCH FORMS)
  *   mist_hfog_* (one layer)    8 eps (1 + tau)                      6.23, 4.43 eps
  *   mist_hfog_sample_distance  |t - t*| <= 4 ulp(t*) + 4 eps xi      0.64, 0.85
- *                              dt*/dxi; monotone                    of the bar
+ *                              d(t*)/dxi; monotone                  of the bar
  *   mist_hfog_layers_eval      transmittance as above; in-scatter   error/bound 0.95
  *                              within the bound it reports
  *   mist_segment_linear        10 eps                               7.92, 9.13 eps
