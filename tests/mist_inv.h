@@ -1393,6 +1393,39 @@ MI_INLINE MI_T MI_F(mi_hfog_column)(const MI_HFOG *fog, MI_T y, MI_T w, MI_T len
     return r;
 }
 
+/* The path tracer's functions on one fog and ray (tmax = len): a free-flight
+ * distance t of channel c at xi is never NaN, in [0, tmax] or +inf, and
+ * monotone in xi (xi and the next number up); the optical depth at t (and
+ * at the next distance) is >= 0, never NaN, non-decreasing along the ray;
+ * the extinction at the start is >= 0 and never NaN.  (Their accuracy:
+ * tests/test_hfog_path.c against a long double root.) */
+MI_INLINE void MI_F(mi_hfog_path)(const MI_HFOG *fog, MI_V3 o, MI_V3 d, MI_T len, int c, MI_T xi)
+{
+    MI_T xi2 = MI_L(nextafter)(xi, (MI_T)2);
+    MI_T t = MI_CALL(MI_L(mist_hfog_sample_distance)(fog, o, d, len, c, xi));
+    MI_T t2 = MI_CALL(MI_L(mist_hfog_sample_distance)(fog, o, d, len, c, xi2));
+    MI_RGB e = MI_CALL(MI_L(mist_hfog_extinction)(fog, o));
+#define MI_PFAIL(what, v) do { mi_fail("mist_hfog_sample_distance(base=%a, density=%a, H=%a; "         "origin (%a, %a, %a), dir (%a, %a, %a), tmax %a, channel %d, xi %a) = %a: %s (%a)",         (double)fog->base, (double)fog->density, (double)fog->scale_height, (double)o.x,         (double)o.y, (double)o.z, (double)d.x, (double)d.y, (double)d.z, (double)len, c,         (double)xi, (double)t, what, (double)(v)); return; } while (0)
+    if (MI_ISNAN(t) || t < 0 || (MI_ISFIN(t) && !(t <= len))) MI_PFAIL("NaN or outside [0, tmax]", t);
+    if (MI_ISNAN(t2) || t2 < t) MI_PFAIL("not monotone in xi: at the next xi", t2);
+    if (MI_ISNAN(e.r) || MI_ISNAN(e.g) || MI_ISNAN(e.b) || e.r < 0 || e.g < 0 || e.b < 0)
+        MI_PFAIL("mist_hfog_extinction NaN or negative", e.r);
+    if (MI_ISFIN(t)) {
+        MI_RGB a = MI_CALL(MI_L(mist_hfog_optical_depth)(fog, o, d, t)), b = a;
+        if (MI_ISFIN(t2)) b = MI_CALL(MI_L(mist_hfog_optical_depth)(fog, o, d, t2));
+        if (MI_ISNAN(a.r) || MI_ISNAN(a.g) || MI_ISNAN(a.b) || a.r < 0 || a.g < 0 || a.b < 0)
+            MI_PFAIL("mist_hfog_optical_depth NaN or negative", a.r);
+        /* each depth is within 6 eps (1 + |w s / H|) of its value (the
+         * header), |w| <= 1: the later one may round lower by twice that,
+         * 12 eps (1 + t2 / H) */
+        mi_w H = fog->scale_height > 0 ? (mi_w)fog->scale_height : 1, tl = (mi_w)t2;
+        mi_w k = 1 - 12 * MI_EPS * (1 + (MI_ISFIN(t2) ? tl : (mi_w)t) / H);
+        if (MI_ISNAN(b.r) || b.r < a.r * k || b.g < a.g * k || b.b < a.b * k)
+            MI_PFAIL("mist_hfog_optical_depth decreasing along the ray", b.r);
+    }
+#undef MI_PFAIL
+}
+
 /* The vertical cosine the library uses (documented in the height fog's
  * DOMAIN AND BAD INPUT): dir as given when it is unit to 16 eps, else
  * mist_normalize's y component (bad: (0, 0, 1)).  mist_normalize is

@@ -721,6 +721,7 @@ static void ST_F(st_hfog)(double share)
         ST_F(mi_hfog_eval)(&f, o, d, len, bg);
         w = ST_F(mi_draw)(&st_src, MI_U);
         ST_F(mi_hfog_column)(&f, o.y, w, len);
+        ST_F(mi_hfog_path)(&f, o, d, len, (int)(st_rng.s % 3), ST_F(mi_draw)(&st_src, MI_U));
         if ((st_rng.s & 15) == 0) ST_F(mi_hfog_null)(o, d, len, bg);
         if (st_dump_dir && mi_fails != f0) {
             unsigned char sel = (unsigned char)(2 | (sizeof(ST_T) == 4));
