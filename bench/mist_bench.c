@@ -248,28 +248,19 @@ static double k_fog_evalf(void)    LOOP(float, mist_phasec_evalf(&pc_fogf, uf[i]
 static double k_dr_samplef(void)   LOOP(float, mist_phasec_samplef(&pc_drf, xf[i]))
 static double k_fog_sample(void)   LOOP(double, mist_phasec_sample(&pc_fog, xd[i]))
 static double k_dr_sample(void)    LOOP(double, mist_phasec_sample(&pc_dr, xd[i]))
+/* a direction sampler over the float inputs, its direction and pdf summed */
+#define DIRF_LOOP(CALL)                                                        \
+    {                                                                          \
+        mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;                           \
+        float pdf, s = 0;                                                      \
+        int i;                                                                 \
+        for (i = 0; i < N; ++i) { wo = CALL; s += wo.x + pdf; }                \
+        return s;                                                              \
+    }
 static double k_fog_sample_dirf(void)
-{
-    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
-    float pdf, s = 0;
-    int i;
-    for (i = 0; i < N; ++i) {
-        wo = mist_phasec_sample_dirf(&pc_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
-        s += wo.x + pdf;
-    }
-    return s;
-}
+    DIRF_LOOP(mist_phasec_sample_dirf(&pc_fogf, wi, xf[i], xf[N - 1 - i], &pdf))
 static double k_phase_fog_sample_dirf(void)
-{
-    mist_vec3f wi = { 0.48f, -0.6f, 0.64f }, wo;
-    float pdf, s = 0;
-    int i;
-    for (i = 0; i < N; ++i) {
-        wo = mist_phase_sample_dirf(&ph_fogf, wi, xf[i], xf[N - 1 - i], &pdf);
-        s += wo.x + pdf;
-    }
-    return s;
-}
+    DIRF_LOOP(mist_phase_sample_dirf(&ph_fogf, wi, xf[i], xf[N - 1 - i], &pdf))
 /* preparing: a new medium per call (the d = 5 .. 50 um fits' parameters) */
 static double k_prep_fogf(void) { float s_ = 0; int i; for (i = 0; i < N; ++i) {
     mist_phasecf p = mist_phasec_fogf(mist_fog_makef(0.98f, 0.5f + 0.1f * xf[i], 22.f, 0.48f));

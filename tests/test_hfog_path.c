@@ -1202,21 +1202,14 @@ static void test_wild(void)
 
 int main(int argc, char **argv)
 {
+    int k;
     (void)argc; (void)argv;
     test_exact(0);
     test_exact(1);
-    test_random(0, 0, mt_scale(20000, 2000));
-    test_random(1, 0, mt_scale(20000, 2000));
-    test_random(0, 1, mt_scale(20000, 2000));
-    test_random(1, 1, mt_scale(20000, 2000));
-    test_random(0, 2, mt_scale(20000, 2000));
-    test_random(1, 2, mt_scale(20000, 2000));
+    for (k = 0; k < 6; ++k) test_random(k & 1, k >> 1, mt_scale(20000, 2000));
     test_monotone();
     test_chi2();
-    test_depth(0, 0, mt_scale(20000, 2000));
-    test_depth(1, 0, mt_scale(20000, 2000));
-    test_depth(0, 1, mt_scale(20000, 2000));
-    test_depth(1, 1, mt_scale(20000, 2000));
+    for (k = 0; k < 4; ++k) test_depth(k & 1, k >> 1, mt_scale(20000, 2000));
     test_bad();
     test_phase();
     test_zup();
